@@ -1,0 +1,32 @@
+# VICC workspace. The two commands a user needs: `make demo` and `make test`.
+# Debian's ROS 1 lives in /usr/bin; a pyenv python3 on PATH lacks catkin_pkg,
+# so every recipe runs with /usr/bin first.
+SHELL := /bin/bash
+export PATH := /usr/bin:/bin:$(PATH)
+JOBS ?= 2
+BUILD_TYPE ?= Release
+CATKIN := catkin_make -j$(JOBS) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCATKIN_ENABLE_TESTING=ON
+
+.PHONY: all deps build test demo bench clean
+
+all: build
+
+deps:
+	@bash scripts/install_deps.sh
+
+build: deps
+	$(CATKIN)
+
+test: build
+	@rm -rf build/test_results
+	@set -o pipefail; source devel/setup.bash && $(CATKIN) run_tests 2>&1 | tee build/run_tests.log | grep -E "^\[ *(RUN|  OK|  FAILED|  PASSED)|FAILURE|Error|error:|rostest" || true
+	@bash scripts/test_summary.sh build/test_results
+
+demo: build
+	@bash scripts/demo.sh
+
+bench: build
+	@bash bench/run_tracking_bench.sh
+
+clean:
+	rm -rf build devel install

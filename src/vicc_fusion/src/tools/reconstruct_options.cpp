@@ -1,0 +1,85 @@
+#include "reconstruct_options.hpp"
+
+#include <cstdlib>
+#include <stdexcept>
+
+namespace vicc_fusion {
+namespace {
+
+int parsePositiveInt(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  const long value = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || value < 1 || value > 1000000) {
+    throw std::invalid_argument(option + " needs a positive integer, got '" + text + "'");
+  }
+  return static_cast<int>(value);
+}
+
+}  // namespace
+
+void printReconstructUsage(std::ostream& out) {
+  out << "usage: vicc_reconstruct BAG [--depth-topic T] [--info-topic T] [--imu-topic T]\n"
+         "                        [--init ekf|identity|constant_velocity|imu] [--levels 1|2|3]\n"
+         "                        [--frame-step N] [--trajectory OUT.tum] [--cloud OUT.ply]\n"
+         "                        [--report OUT.json] [--gt TRUTH.tum] [--quiet]\n"
+         "Tracks the depth camera through a depth + IMU recording (thesis 5.4).\n"
+         "  topics       default to the only Image / CameraInfo / Imu topic in the bag\n"
+         "  --init       ICP initial guess: ekf (default, the thesis), identity (KinectFusion),\n"
+         "               constant_velocity, imu (plain IMU integration)\n"
+         "  --levels     image pyramid levels for ICP (default 3)\n"
+         "  --frame-step process every N-th depth frame (thesis: All = 1, 1/2 = 2, 1/4 = 4)\n"
+         "  --trajectory camera optical frame in map, TUM format, one line per tracked frame\n"
+         "  --cloud      the tracked frames' points in map, binary PLY with normals\n"
+         "  --report     JSON: frames processed/lost, ICP iterations, Init_EKF/Init_Id, timings\n"
+         "  --gt         ground-truth TUM trajectory (e.g. from vicc_make_bag --gt): the report\n"
+         "               adds the pose error, both aligned at the first tracked frame\n"
+         "  --quiet      no progress line\n";
+}
+
+bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptions& options,
+                             std::ostream& out) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
+      return argv[++i];
+    };
+    if (arg == "-h" || arg == "--help") {
+      printReconstructUsage(out);
+      return false;
+    } else if (arg == "--depth-topic") {
+      options.depth_topic = value();
+    } else if (arg == "--info-topic") {
+      options.info_topic = value();
+    } else if (arg == "--imu-topic") {
+      options.imu_topic = value();
+    } else if (arg == "--init") {
+      options.init = vicc_tracking::initStrategyFromString(value());
+    } else if (arg == "--levels") {
+      options.levels = parsePositiveInt(arg, value());
+      if (options.levels > 3) throw std::invalid_argument("--levels must be 1, 2 or 3");
+    } else if (arg == "--frame-step") {
+      options.frame_step = parsePositiveInt(arg, value());
+    } else if (arg == "--trajectory") {
+      options.trajectory_path = value();
+    } else if (arg == "--cloud") {
+      options.cloud_path = value();
+    } else if (arg == "--report") {
+      options.report_path = value();
+    } else if (arg == "--gt") {
+      options.ground_truth_path = value();
+    } else if (arg == "--quiet") {
+      options.quiet = true;
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw std::invalid_argument("unknown option " + arg);
+    } else if (options.bag_path.empty()) {
+      options.bag_path = arg;
+    } else {
+      throw std::invalid_argument("more than one bag given: " + arg);
+    }
+  }
+  if (options.bag_path.empty()) throw std::invalid_argument("no bag given");
+  return true;
+}
+
+}  // namespace vicc_fusion

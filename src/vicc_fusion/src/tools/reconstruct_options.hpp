@@ -1,0 +1,32 @@
+#pragma once
+// Command line of vicc_reconstruct (the contract later issues extend).
+
+#include <ostream>
+#include <string>
+
+#include "vicc_tracking/init_strategy.hpp"
+
+namespace vicc_fusion {
+
+struct ReconstructOptions {
+  std::string bag_path;
+  std::string depth_topic;  ///< empty: the only sensor_msgs/Image topic
+  std::string info_topic;
+  std::string imu_topic;
+  vicc_tracking::InitStrategyType init = vicc_tracking::InitStrategyType::kEkf;
+  int levels = 3;
+  int frame_step = 1;
+  std::string trajectory_path;
+  std::string cloud_path;
+  std::string report_path;
+  std::string ground_truth_path;  ///< optional TUM file: adds the error against it to the report
+  bool quiet = false;  ///< no progress line
+};
+
+/// Throws std::invalid_argument with a message for the user on bad arguments.
+/// Returns false when --help was given (usage printed to `out`).
+bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptions& options,
+                             std::ostream& out);
+void printReconstructUsage(std::ostream& out);
+
+}  // namespace vicc_fusion

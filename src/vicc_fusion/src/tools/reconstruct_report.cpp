@@ -1,0 +1,61 @@
+#include "reconstruct_report.hpp"
+
+namespace vicc_fusion {
+namespace {
+
+nlohmann::json meanStd(const vicc_tracking::SampleSummary& summary) {
+  return {{"mean", summary.mean}, {"std", summary.stddev}, {"count", summary.count}};
+}
+
+}  // namespace
+
+nlohmann::json makeReport(const ReconstructOptions& options, const ReconstructRun& run,
+                          const vicc_tracking::TrackingStatistics& statistics) {
+  nlohmann::json report;
+  report["bag"] = options.bag_path;
+  report["topics"] = {{"depth", run.depth_topic}, {"camera_info", run.info_topic},
+                      {"imu", run.imu_topic}};
+  report["settings"] = {{"init", vicc_tracking::toString(options.init)},
+                        {"levels", options.levels},
+                        {"frame_step", options.frame_step}};
+  report["frames"] = {{"in_bag", run.depth_frames_in_bag},
+                      {"skipped_by_frame_step", run.depth_frames_skipped},
+                      {"processed", statistics.framesSeen() - statistics.framesDropped()},
+                      {"dropped_invalid", statistics.framesDropped()},
+                      {"initializing", statistics.framesInitializing()},
+                      {"tracked", statistics.framesTracked()},
+                      {"lost", statistics.framesLost()}};
+  report["icp_iterations"] = meanStd(statistics.iterations());
+  report["init_ratio"] = {{"what", "|initial guess - ICP pose| / |previous pose - ICP pose| "
+                                   "(Init_EKF / Init_Id in thesis 5.5.1)"},
+                          {"position", meanStd(statistics.initRatioPosition())},
+                          {"rotation", meanStd(statistics.initRatioRotation())}};
+  report["median_ms"] = {{"preprocessing", statistics.preprocessingMs().median},
+                         {"prediction", statistics.predictionMs().median},
+                         {"icp", statistics.icpMs().median},
+                         {"tracking_total", statistics.totalMs().median}};
+  if (const auto drift = statistics.loopClosureDrift()) {
+    report["first_to_last_pose"] = {
+        {"what", "difference between first and last tracked pose; drift on a closed loop"},
+        {"position_m", drift->translation},
+        {"rotation_deg", drift->rotation_deg}};
+  }
+  const int processed = statistics.framesSeen() - statistics.framesDropped();
+  report["wall_time_s"] = run.wall_time_s;
+  report["frames_per_second"] = run.wall_time_s > 0 ? processed / run.wall_time_s : 0.0;
+  if (!options.cloud_path.empty()) report["cloud_points"] = run.cloud_points;
+  if (run.ground_truth_error) {
+    const vicc_tracking::TrajectoryError& error = *run.ground_truth_error;
+    report["ground_truth_error"] = {
+        {"what", "tracked camera poses vs ground truth, aligned at the first tracked frame"},
+        {"matched_poses", error.matched},
+        {"rmse_position_m", error.rmse_position},
+        {"max_position_m", error.max_position},
+        {"max_rotation_deg", error.max_rotation_deg},
+        {"final_position_m", error.final_position},
+        {"final_rotation_deg", error.final_rotation_deg}};
+  }
+  return report;
+}
+
+}  // namespace vicc_fusion

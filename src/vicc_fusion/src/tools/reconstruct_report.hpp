@@ -1,0 +1,27 @@
+#pragma once
+// The JSON report of vicc_reconstruct.
+
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "reconstruct_options.hpp"
+#include "vicc_tracking/tracking_statistics.hpp"
+#include "vicc_tracking/trajectory_error.hpp"
+
+namespace vicc_fusion {
+
+struct ReconstructRun {
+  std::string depth_topic, info_topic, imu_topic;
+  size_t depth_frames_in_bag = 0;
+  size_t depth_frames_skipped = 0;  ///< by --frame-step
+  double wall_time_s = 0.0;
+  size_t cloud_points = 0;
+  std::optional<vicc_tracking::TrajectoryError> ground_truth_error;
+};
+
+nlohmann::json makeReport(const ReconstructOptions& options, const ReconstructRun& run,
+                          const vicc_tracking::TrackingStatistics& statistics);
+
+}  // namespace vicc_fusion

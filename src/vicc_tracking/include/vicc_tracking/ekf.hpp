@@ -1,0 +1,81 @@
+#pragma once
+// The EKF of thesis 5.4 that predicts the ICP initial pose from IMU data and "virtual
+// measurements" extrapolated from previous ICP poses. It runs on the IMU body pose in the
+// gravity-aligned map frame; state x = [q v p q_b] (Eq. 5.1), 14 values:
+//   q   frame-to-frame rotation since the last depth frame (body frame),
+//   v   velocity in the map frame,
+//   p   translation since the last depth frame (map frame),
+//   q_b base orientation = orientation at the last depth frame.
+
+#include <Eigen/Core>
+
+#include "vicc_tracking/imu_types.hpp"
+#include "vicc_tracking/quaternion_math.hpp"
+
+namespace vicc_tracking {
+
+using Vector14d = Eigen::Matrix<double, 14, 1>;
+using Matrix14d = Eigen::Matrix<double, 14, 14>;
+
+/// Q, R and P0 as diagonal matrices; defaults are the thesis's tuned values (5.4.3, Eq. 5.8).
+struct EkfConfig {
+  double process_noise_rotation = 1e-5;
+  double process_noise_velocity = 1e-2;
+  double process_noise_position = 1e-1;
+  double process_noise_base = 1e-5;
+  double measurement_noise_rotation = 1e-3;
+  double measurement_noise_velocity = 1e-6;
+  double measurement_noise_position = 1e-5;
+  double measurement_noise_base = 1e-13;
+  double initial_covariance = 1e-4;
+  void validate() const;
+};
+
+struct EkfState {
+  Quat4 q = identityQuat();
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  Quat4 q_b = identityQuat();
+
+  Vector14d toVector() const;
+  static EkfState fromVector(const Vector14d& x);
+};
+
+class InitializationEkf {
+ public:
+  /// gravity_ref: the still-phase specific force rotated into the map frame (g~ of 5.4.1).
+  InitializationEkf(const EkfConfig& config, const ImuCalibration& calibration,
+                    const Eigen::Vector3d& gravity_ref);
+
+  /// t_0: zero velocity, translation and frame-to-frame rotation, P = P0 (Eq. 5.8).
+  void start(const Quat4& base_orientation);
+
+  /// Eq. 5.4-5.7 and Eq. 2.20 for one IMU step.
+  void predict(const ImuStep& step);
+
+  /// Eq. 5.20-5.22 with the linear h of Eq. 5.16.
+  void correct(const Vector14d& measurement);
+
+  /// Eq. 5.25-5.30: start the next interval from the corrected state and the previous
+  /// ICP orientation.
+  void reset(const Quat4& previous_icp_orientation);
+
+  /// d f / d x of the prediction (Eq. 2.21), exposed for tests.
+  Matrix14d processJacobian(const ImuStep& step) const;
+  /// d g / d x of the reset (Eq. 5.31), exposed for tests.
+  Matrix14d resetJacobian(const Quat4& previous_icp_orientation) const;
+
+  const EkfState& state() const { return state_; }
+  const Matrix14d& covariance() const { return covariance_; }
+
+ private:
+  EkfConfig config_;
+  ImuCalibration calibration_;
+  Eigen::Vector3d gravity_ref_;
+  EkfState state_;
+  Matrix14d covariance_;
+  Matrix14d process_noise_;
+  Matrix14d measurement_noise_;
+};
+
+}  // namespace vicc_tracking

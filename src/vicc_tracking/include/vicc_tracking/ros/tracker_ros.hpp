@@ -1,0 +1,87 @@
+#pragma once
+// ROS interface of the camera tracker, shared by the `tracker` node and nodelet. It owns no
+// algorithm: messages are validated and converted, the core Tracker does the work, results
+// are published. Bad input is reported with a throttled warning and dropped.
+
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <nav_msgs/Path.h>
+#include <ros/ros.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/Image.h>
+#include <sensor_msgs/Imu.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_ros/transform_listener.h>
+
+#include "vicc_tracking/tracker.hpp"
+
+namespace vicc_tracking {
+
+struct TrackerRosSettings {
+  std::string map_frame = "map";
+  /// Frame whose pose in map is published on tf. Empty: the IMU frame (the root of the rig's
+  /// static tree in the usual setup), so map -> imu -> camera stays a tree.
+  std::string tf_child_frame;
+  bool publish_tf = true;
+  int max_path_length = 5000;
+  /// Depth frames held back waiting for IMU data up to their stamp; beyond this the oldest
+  /// is processed with the IMU data that is there.
+  int max_pending_frames = 3;
+  /// If set, the map is aligned so that the first tracked pose equals this frame's pose in
+  /// map_frame (e.g. the simulator's ground truth), for side-by-side display.
+  std::string initial_pose_frame;
+  void validate() const;
+};
+
+TrackerRosSettings readTrackerRosSettings(const ros::NodeHandle& private_nh);
+
+class TrackerRos {
+ public:
+  /// Throws std::invalid_argument when a parameter is invalid.
+  TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+
+ private:
+  void onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info);
+  void onImu(const sensor_msgs::ImuConstPtr& imu);
+  void onDepth(const sensor_msgs::ImageConstPtr& depth);
+
+  bool ensureTracker(const std::string& camera_frame);
+  void processPending();
+  void processDepth(const sensor_msgs::ImageConstPtr& depth);
+  void publish(const FrameReport& report, const sensor_msgs::Image& depth);
+  void publishPose(const Eigen::Isometry3d& camera_pose, const ros::Time& stamp,
+                   const std::string& camera_frame);
+  Eigen::Isometry3d mapAlignment(const Eigen::Isometry3d& first_pose, const ros::Time& stamp);
+  void forwardImu(const ImuSample& sample);
+
+  TrackerConfig config_;
+  TrackerRosSettings settings_;
+  std::unique_ptr<Tracker> tracker_;
+  std::optional<CameraModel> camera_;
+  std::string imu_frame_;
+  std::optional<double> last_imu_stamp_;
+  std::deque<ImuSample> imu_before_tracker_;
+  std::deque<sensor_msgs::ImageConstPtr> pending_depth_;
+  Eigen::Isometry3d camera_to_child_ = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d map_alignment_ = Eigen::Isometry3d::Identity();
+  std::optional<Eigen::Isometry3d> last_published_pose_;
+  ros::Time last_published_stamp_;
+  TrackingState last_state_ = TrackingState::kInitializing;
+
+  tf2_ros::Buffer tf_buffer_;
+  tf2_ros::TransformListener tf_listener_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  ros::Subscriber depth_sub_;
+  ros::Subscriber info_sub_;
+  ros::Subscriber imu_sub_;
+  ros::Publisher odom_pub_;
+  ros::Publisher path_pub_;
+  ros::Publisher status_pub_;
+  nav_msgs::Path path_;
+};
+
+}  // namespace vicc_tracking

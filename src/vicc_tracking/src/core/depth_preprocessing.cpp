@@ -1,0 +1,223 @@
+#include "vicc_tracking/depth_preprocessing.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace vicc_tracking {
+
+void PreprocessingConfig::validate() const {
+  if (pyramid_levels < 1 || pyramid_levels > 3) {
+    throw std::invalid_argument("pyramid_levels must be 1, 2 or 3, got " +
+                                std::to_string(pyramid_levels));
+  }
+  if (!(min_depth >= 0.0) || !(max_depth > min_depth)) {
+    throw std::invalid_argument("depth range needs 0 <= min_depth < max_depth");
+  }
+  if (bilateral_filter && (bilateral_diameter < 1 || !(bilateral_sigma_depth > 0.0) ||
+                           !(bilateral_sigma_space > 0.0))) {
+    throw std::invalid_argument("bilateral filter needs diameter >= 1 and positive sigmas");
+  }
+  if (!(pyramid_depth_threshold > 0.0) || !(normal_depth_jump > 0.0)) {
+    throw std::invalid_argument("pyramid_depth_threshold and normal_depth_jump must be > 0");
+  }
+}
+
+cv::Mat1f toMetricDepth(const cv::Mat& raw) {
+  cv::Mat1f metric;
+  if (raw.type() == CV_32FC1) {
+    metric = raw.clone();
+  } else if (raw.type() == CV_16UC1) {
+    raw.convertTo(metric, CV_32F, 0.001);
+  } else {
+    throw std::invalid_argument("unsupported depth image type (expected 32FC1 metres or 16UC1 "
+                                "millimetres)");
+  }
+  for (int v = 0; v < metric.rows; ++v) {
+    float* row = metric.ptr<float>(v);
+    for (int u = 0; u < metric.cols; ++u) {
+      if (!std::isfinite(row[u]) || row[u] < 0.f) row[u] = 0.f;
+    }
+  }
+  return metric;
+}
+
+PinholeIntrinsics PinholeIntrinsics::halved() const {
+  PinholeIntrinsics half;
+  half.width = width / 2;
+  half.height = height / 2;
+  half.fx = fx * 0.5f;
+  half.fy = fy * 0.5f;
+  // Pixel centres sit at integer coordinates: a 2x2 block's centre maps to (2u + 0.5).
+  half.cx = (cx - 0.5f) * 0.5f;
+  half.cy = (cy - 0.5f) * 0.5f;
+  return half;
+}
+
+DepthLevel computeDepthLevel(const cv::Mat1f& depth, const PinholeIntrinsics& intrinsics,
+                             double normal_depth_jump) {
+  DepthLevel level;
+  level.intrinsics = intrinsics;
+  level.depth = depth;
+  const int width = depth.cols;
+  const int height = depth.rows;
+  const size_t count = static_cast<size_t>(width) * height;
+  level.vertices.assign(count, Eigen::Vector3f::Zero());
+  level.normals.assign(count, Eigen::Vector3f::Zero());
+  level.radii.assign(count, 0.f);
+
+  const float inv_fx = 1.f / intrinsics.fx;
+  const float inv_fy = 1.f / intrinsics.fy;
+  for (int v = 0; v < height; ++v) {
+    const float* row = depth.ptr<float>(v);
+    for (int u = 0; u < width; ++u) {
+      const float z = row[u];
+      if (z <= 0.f) continue;
+      // Eq. 2.4: V(u) = D(u) K^-1 (u, 1)
+      level.vertices[v * width + u] =
+          Eigen::Vector3f((u - intrinsics.cx) * z * inv_fx, (v - intrinsics.cy) * z * inv_fy, z);
+      ++level.valid_vertices;
+    }
+  }
+
+  const float max_jump = static_cast<float>(normal_depth_jump);
+  const float mean_focal = 0.5f * (intrinsics.fx + intrinsics.fy);
+  for (int v = 1; v + 1 < height; ++v) {
+    for (int u = 1; u + 1 < width; ++u) {
+      const int index = v * width + u;
+      const Eigen::Vector3f& center = level.vertices[index];
+      if (center.z() <= 0.f) continue;
+      const Eigen::Vector3f& left = level.vertices[index - 1];
+      const Eigen::Vector3f& right = level.vertices[index + 1];
+      const Eigen::Vector3f& up = level.vertices[index - width];
+      const Eigen::Vector3f& down = level.vertices[index + width];
+      if (left.z() <= 0.f || right.z() <= 0.f || up.z() <= 0.f || down.z() <= 0.f) continue;
+      if (std::abs(right.z() - left.z()) > max_jump || std::abs(down.z() - up.z()) > max_jump) {
+        continue;  // depth edge: a normal across it would be meaningless
+      }
+      Eigen::Vector3f normal = (right - left).cross(down - up);
+      const float length = normal.norm();
+      if (length <= 0.f) continue;
+      normal /= length;
+      if (normal.dot(center) > 0.f) normal = -normal;  // face the camera
+      level.normals[index] = normal;
+      ++level.valid_normals;
+      // Splat radius as in Keller et al.: grows with distance and with grazing view angles.
+      const float cos_view = std::max(0.26f, std::abs(normal.dot(center.normalized())));
+      level.radii[index] = std::sqrt(2.f) * 0.5f * center.z() / mean_focal / cos_view;
+    }
+  }
+  return level;
+}
+
+cv::Mat1f downsampleDepth(const cv::Mat1f& depth, float threshold) {
+  cv::Mat1f half(depth.rows / 2, depth.cols / 2, 0.f);
+  for (int v = 0; v < half.rows; ++v) {
+    const float* row0 = depth.ptr<float>(2 * v);
+    const float* row1 = depth.ptr<float>(2 * v + 1);
+    float* out = half.ptr<float>(v);
+    for (int u = 0; u < half.cols; ++u) {
+      const float block[4] = {row0[2 * u], row0[2 * u + 1], row1[2 * u], row1[2 * u + 1]};
+      float nearest = 0.f;
+      for (float d : block) {
+        if (d > 0.f && (nearest == 0.f || d < nearest)) nearest = d;
+      }
+      if (nearest == 0.f) continue;
+      float sum = 0.f;
+      int n = 0;
+      for (float d : block) {
+        if (d > 0.f && d - nearest <= threshold) {
+          sum += d;
+          ++n;
+        }
+      }
+      out[u] = sum / n;
+    }
+  }
+  return half;
+}
+
+DepthPreprocessor::DepthPreprocessor(const PreprocessingConfig& config) : config_(config) {
+  config_.validate();
+}
+
+void DepthPreprocessor::setCamera(const CameraModel& camera) {
+  camera.validate();
+  const bool same = has_camera_ && camera.width == camera_.width &&
+                    camera.height == camera_.height && camera.fx == camera_.fx &&
+                    camera.fy == camera_.fy && camera.cx == camera_.cx && camera.cy == camera_.cy &&
+                    camera.model == camera_.model && camera.distortion == camera_.distortion;
+  if (same) return;
+  camera_ = camera;
+  has_camera_ = true;
+  undistort_map1_.release();
+  undistort_map2_.release();
+  if (!camera_.hasDistortion()) return;
+  const cv::Size size(camera_.width, camera_.height);
+  const cv::Matx33d k = camera_.intrinsicMatrix();
+  // Undistorted images keep the same pinhole K; nearest-neighbour lookup never blends depths
+  // across an edge.
+  if (camera_.model == DistortionModel::kEquidistant) {
+    cv::fisheye::initUndistortRectifyMap(k, camera_.distortionCoefficients(),
+                                         cv::Matx33d::eye(), k, size, CV_16SC2, undistort_map1_,
+                                         undistort_map2_);
+  } else {
+    cv::initUndistortRectifyMap(k, camera_.distortionCoefficients(), cv::Matx33d::eye(), k, size,
+                                CV_16SC2, undistort_map1_, undistort_map2_);
+  }
+}
+
+cv::Mat1f DepthPreprocessor::undistort(const cv::Mat1f& metric_depth) const {
+  if (undistort_map1_.empty()) return metric_depth;
+  cv::Mat1f undistorted;
+  cv::remap(metric_depth, undistorted, undistort_map1_, undistort_map2_, cv::INTER_NEAREST,
+            cv::BORDER_CONSTANT, cv::Scalar(0.f));
+  return undistorted;
+}
+
+DepthPyramid DepthPreprocessor::process(const cv::Mat& raw) const {
+  if (!has_camera_) throw std::logic_error("DepthPreprocessor: no camera set");
+  if (raw.cols != camera_.width || raw.rows != camera_.height) {
+    throw std::invalid_argument("depth image is " + std::to_string(raw.cols) + "x" +
+                                std::to_string(raw.rows) + " but camera_info says " +
+                                std::to_string(camera_.width) + "x" +
+                                std::to_string(camera_.height));
+  }
+  cv::Mat1f depth = undistort(toMetricDepth(raw));
+  const float min_depth = static_cast<float>(config_.min_depth);
+  const float max_depth = static_cast<float>(config_.max_depth);
+  depth.forEach([&](float& d, const int*) {
+    if (d < min_depth || d > max_depth) d = 0.f;
+  });
+
+  if (config_.bilateral_filter) {
+    cv::Mat1f filtered;
+    cv::bilateralFilter(depth, filtered, config_.bilateral_diameter,
+                        config_.bilateral_sigma_depth, config_.bilateral_sigma_space);
+    // Invalid pixels stay invalid; valid ones never take a value blended with "0".
+    filtered.setTo(0.f, depth == 0.f);
+    depth = filtered;
+  }
+
+  DepthPyramid pyramid;
+  pyramid.reserve(config_.pyramid_levels);
+  PinholeIntrinsics intrinsics;
+  intrinsics.width = camera_.width;
+  intrinsics.height = camera_.height;
+  intrinsics.fx = static_cast<float>(camera_.fx);
+  intrinsics.fy = static_cast<float>(camera_.fy);
+  intrinsics.cx = static_cast<float>(camera_.cx);
+  intrinsics.cy = static_cast<float>(camera_.cy);
+  pyramid.push_back(computeDepthLevel(depth, intrinsics, config_.normal_depth_jump));
+  for (int level = 1; level < config_.pyramid_levels; ++level) {
+    depth = downsampleDepth(depth, static_cast<float>(config_.pyramid_depth_threshold));
+    intrinsics = intrinsics.halved();
+    pyramid.push_back(computeDepthLevel(depth, intrinsics, config_.normal_depth_jump * 2.0));
+  }
+  return pyramid;
+}
+
+}  // namespace vicc_tracking
