@@ -5,7 +5,7 @@ SHELL := /bin/bash
 export PATH := /usr/bin:/bin:$(PATH)
 JOBS ?= 2
 BUILD_TYPE ?= Release
-CATKIN := catkin_make -j$(JOBS) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCATKIN_ENABLE_TESTING=ON
+CATKIN := catkin_make -j$(JOBS) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCATKIN_ENABLE_TESTING=ON -DCATKIN_WHITELIST_PACKAGES=""
 
 .PHONY: all deps build test demo bench clean
 

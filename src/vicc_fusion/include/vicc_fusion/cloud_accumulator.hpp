@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include <Eigen/Geometry>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
+#include <Eigen/Geometry>
 
 #include "vicc_tracking/depth_preprocessing.hpp"
 

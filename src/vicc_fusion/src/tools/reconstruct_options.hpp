@@ -20,7 +20,7 @@ struct ReconstructOptions {
   std::string cloud_path;
   std::string report_path;
   std::string ground_truth_path;  ///< optional TUM file: adds the error against it to the report
-  bool quiet = false;  ///< no progress line
+  bool quiet = false;             ///< no progress line
 };
 
 /// Throws std::invalid_argument with a message for the user on bad arguments.

@@ -13,8 +13,8 @@ nlohmann::json makeReport(const ReconstructOptions& options, const ReconstructRu
                           const vicc_tracking::TrackingStatistics& statistics) {
   nlohmann::json report;
   report["bag"] = options.bag_path;
-  report["topics"] = {{"depth", run.depth_topic}, {"camera_info", run.info_topic},
-                      {"imu", run.imu_topic}};
+  report["topics"] = {
+      {"depth", run.depth_topic}, {"camera_info", run.info_topic}, {"imu", run.imu_topic}};
   report["settings"] = {{"init", vicc_tracking::toString(options.init)},
                         {"levels", options.levels},
                         {"frame_step", options.frame_step}};
@@ -26,8 +26,9 @@ nlohmann::json makeReport(const ReconstructOptions& options, const ReconstructRu
                       {"tracked", statistics.framesTracked()},
                       {"lost", statistics.framesLost()}};
   report["icp_iterations"] = meanStd(statistics.iterations());
-  report["init_ratio"] = {{"what", "|initial guess - ICP pose| / |previous pose - ICP pose| "
-                                   "(Init_EKF / Init_Id in thesis 5.5.1)"},
+  report["init_ratio"] = {{"what",
+                           "|initial guess - ICP pose| / |previous pose - ICP pose| "
+                           "(Init_EKF / Init_Id in thesis 5.5.1)"},
                           {"position", meanStd(statistics.initRatioPosition())},
                           {"rotation", meanStd(statistics.initRatioRotation())}};
   report["median_ms"] = {{"preprocessing", statistics.preprocessingMs().median},

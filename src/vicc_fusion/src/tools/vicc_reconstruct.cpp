@@ -49,16 +49,16 @@ class Reconstruction {
       vicc_tracking::PreprocessingConfig cloud_preprocessing = config_.preprocessing;
       cloud_preprocessing.pyramid_levels = 1;
       cloud_preprocessor_ = std::make_unique<vicc_tracking::DepthPreprocessor>(cloud_preprocessing);
-      cloud_ = std::make_unique<vicc_fusion::CloudAccumulator>(vicc_fusion::CloudAccumulatorConfig{});
+      cloud_ =
+          std::make_unique<vicc_fusion::CloudAccumulator>(vicc_fusion::CloudAccumulatorConfig{});
     }
   }
 
   void run() {
     start_ = Clock::now();
-    bag_.forEachDepthFrame([this](const sensor_msgs::ImageConstPtr& image,
-                                  const sensor_msgs::CameraInfoConstPtr& info) {
-      onFrame(image, info);
-    });
+    bag_.forEachDepthFrame(
+        [this](const sensor_msgs::ImageConstPtr& image,
+               const sensor_msgs::CameraInfoConstPtr& info) { onFrame(image, info); });
     run_.wall_time_s = secondsSince(start_);
     if (!options_.quiet) printProgress(true);
   }
@@ -83,7 +83,8 @@ class Reconstruction {
                    "vicc_reconstruct: against ground truth (%zu poses): RMSE %.4f m, max %.4f m, "
                    "max %.3f deg\n",
                    run_.ground_truth_error->matched, run_.ground_truth_error->rmse_position,
-                   run_.ground_truth_error->max_position, run_.ground_truth_error->max_rotation_deg);
+                   run_.ground_truth_error->max_position,
+                   run_.ground_truth_error->max_rotation_deg);
     }
     const nlohmann::json report = vicc_fusion::makeReport(options_, run_, statistics_);
     if (!options_.report_path.empty()) {
@@ -204,8 +205,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const vicc_tracking::RigBag bag(
-        options.bag_path, {options.depth_topic, options.info_topic, options.imu_topic});
+    const vicc_tracking::RigBag bag(options.bag_path,
+                                    {options.depth_topic, options.info_topic, options.imu_topic});
     std::fprintf(stderr, "vicc_reconstruct: %s: %zu depth frames on %s, %zu IMU readings on %s\n",
                  options.bag_path.c_str(), bag.depthFrameCount(), bag.topics().depth.c_str(),
                  bag.imuSamples().size(),

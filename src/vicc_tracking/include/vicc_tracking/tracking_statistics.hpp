@@ -24,7 +24,8 @@ class TrackingStatistics {
  public:
   /// Frames whose identity error is below these are left out of the Init ratio: the
   /// camera did not move, the ratio is noise / noise.
-  explicit TrackingStatistics(double min_motion_position = 1e-3, double min_motion_rotation_deg = 0.1);
+  explicit TrackingStatistics(double min_motion_position = 1e-3,
+                              double min_motion_rotation_deg = 0.1);
 
   void add(const FrameReport& report);
 

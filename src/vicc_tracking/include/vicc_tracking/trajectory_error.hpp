@@ -9,11 +9,11 @@
 namespace vicc_tracking {
 
 struct TrajectoryError {
-  size_t matched = 0;              ///< estimated poses with a ground-truth pose at their stamp
-  double rmse_position = 0.0;      ///< m
-  double max_position = 0.0;       ///< m
+  size_t matched = 0;          ///< estimated poses with a ground-truth pose at their stamp
+  double rmse_position = 0.0;  ///< m
+  double max_position = 0.0;   ///< m
   double max_rotation_deg = 0.0;
-  double final_position = 0.0;     ///< m, at the last matched pose
+  double final_position = 0.0;  ///< m, at the last matched pose
   double final_rotation_deg = 0.0;
 };
 

@@ -98,7 +98,11 @@ DepthLevel computeDepthLevel(const cv::Mat1f& depth, const PinholeIntrinsics& in
       if (std::abs(right.z() - left.z()) > max_jump || std::abs(down.z() - up.z()) > max_jump) {
         continue;  // depth edge: a normal across it would be meaningless
       }
-      Eigen::Vector3f normal = (right - left).cross(down - up);
+      // Cross product written out: Eigen's SSE cross() trips a false GCC 12 array-bounds error.
+      const Eigen::Vector3f a = right - left;
+      const Eigen::Vector3f b = down - up;
+      Eigen::Vector3f normal(a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(),
+                             a.x() * b.y() - a.y() * b.x());
       const float length = normal.norm();
       if (length <= 0.f) continue;
       normal /= length;

@@ -45,6 +45,18 @@ PoseDifference poseDifference(const Eigen::Isometry3d& a, const Eigen::Isometry3
   return difference;
 }
 
+namespace {
+
+/// Pose composition accumulates rounding; Isometry3d::inverse() assumes an exact rotation, so
+/// without this a tiny scale error doubles with every frame (ref * ref^-T * ...).
+Eigen::Isometry3d orthonormalized(const Eigen::Isometry3d& pose) {
+  Eigen::Isometry3d result = pose;
+  result.linear() = Eigen::Quaterniond(pose.linear()).normalized().toRotationMatrix();
+  return result;
+}
+
+}  // namespace
+
 Tracker::Tracker(const TrackerConfig& config, const Eigen::Isometry3d& imu_to_camera)
     : config_(config),
       imu_to_camera_(imu_to_camera),
@@ -179,7 +191,7 @@ FrameReport Tracker::addDepth(double stamp, const cv::Mat& raw_depth) {
   const auto prediction_start = std::chrono::steady_clock::now();
   const double interval = stamp - *last_stamp_;
   const std::vector<ImuStep> steps = synchronizer_.takeInterval(interval);
-  const Eigen::Isometry3d guess = strategy_->predict(stamp, steps) * imu_to_camera_;
+  const Eigen::Isometry3d guess = orthonormalized(strategy_->predict(stamp, steps) * imu_to_camera_);
   report.timings.prediction_ms = millisecondsSince(prediction_start);
 
   const auto icp_start = std::chrono::steady_clock::now();
@@ -189,7 +201,7 @@ FrameReport Tracker::addDepth(double stamp, const cv::Mat& raw_depth) {
 
   report.initial_guess = guess;
   if (report.icp.ok) {
-    report.camera_pose = reference_pose * report.icp.pose;
+    report.camera_pose = orthonormalized(reference_pose * report.icp.pose);
     state_ = TrackingState::kOk;
   } else {
     // Keep the prediction rather than a result ICP itself distrusts.

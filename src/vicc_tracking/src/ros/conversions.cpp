@@ -107,8 +107,8 @@ ImuSample imuSampleFromMessage(const sensor_msgs::Imu& imu) {
   sample.stamp = imu.header.stamp.toSec();
   sample.angular_velocity =
       Eigen::Vector3d(imu.angular_velocity.x, imu.angular_velocity.y, imu.angular_velocity.z);
-  sample.linear_acceleration = Eigen::Vector3d(
-      imu.linear_acceleration.x, imu.linear_acceleration.y, imu.linear_acceleration.z);
+  sample.linear_acceleration = Eigen::Vector3d(imu.linear_acceleration.x, imu.linear_acceleration.y,
+                                               imu.linear_acceleration.z);
   return sample;
 }
 

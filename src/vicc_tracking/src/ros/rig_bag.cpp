@@ -44,8 +44,8 @@ std::string chooseTopic(const std::map<std::string, std::string>& topic_types,
   }
   std::string list;
   for (const auto& candidate : candidates) list += " " + candidate;
-  throw std::runtime_error("the bag has several " + type + " topics (" + list + " ); choose one with " +
-                           option);
+  throw std::runtime_error("the bag has several " + type + " topics (" + list +
+                           " ); choose one with " + option);
 }
 
 }  // namespace
@@ -79,6 +79,11 @@ void RigBag::detectTopics(const RigBagTopics& requested) {
       camera_frame_ = image->header.frame_id;
       break;
     }
+  }
+  // camera_info is constant in practice and may be recorded just after the first image.
+  rosbag::View info_view(bag_, rosbag::TopicQuery(topics_.camera_info));
+  for (const rosbag::MessageInstance& message : info_view) {
+    if ((first_camera_info_ = message.instantiate<sensor_msgs::CameraInfo>())) break;
   }
 }
 
@@ -126,7 +131,7 @@ void RigBag::forEachDepthFrame(
     const std::function<void(const sensor_msgs::ImageConstPtr&,
                              const sensor_msgs::CameraInfoConstPtr&)>& on_frame) const {
   rosbag::View view(bag_, rosbag::TopicQuery({topics_.depth, topics_.camera_info}));
-  sensor_msgs::CameraInfoConstPtr info;
+  sensor_msgs::CameraInfoConstPtr info = first_camera_info_;
   for (const rosbag::MessageInstance& message : view) {
     if (message.getTopic() == topics_.camera_info) {
       if (auto latest = message.instantiate<sensor_msgs::CameraInfo>()) info = latest;

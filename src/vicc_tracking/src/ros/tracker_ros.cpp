@@ -43,14 +43,16 @@ TrackerRos::TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   path_pub_ = private_nh.advertise<nav_msgs::Path>("path", 1, true);
   status_pub_ = private_nh.advertise<vicc_msgs::TrackingStatus>("status", 50);
   // IMU at up to 400 Hz must not be dropped while a depth frame is processed.
-  imu_sub_ = nh.subscribe("imu", 2000, &TrackerRos::onImu, this, ros::TransportHints().tcpNoDelay());
+  imu_sub_ =
+      nh.subscribe("imu", 2000, &TrackerRos::onImu, this, ros::TransportHints().tcpNoDelay());
   info_sub_ = nh.subscribe("depth/camera_info", 10, &TrackerRos::onCameraInfo, this);
   depth_sub_ = nh.subscribe("depth/image", 10, &TrackerRos::onDepth, this);
   path_.header.frame_id = settings_.map_frame;
-  ROS_INFO("tracker: init strategy '%s', %d pyramid level(s); depth on %s, camera_info on %s, "
-           "IMU on %s",
-           toString(config_.init_strategy).c_str(), config_.preprocessing.pyramid_levels,
-           depth_sub_.getTopic().c_str(), info_sub_.getTopic().c_str(), imu_sub_.getTopic().c_str());
+  ROS_INFO(
+      "tracker: init strategy '%s', %d pyramid level(s); depth on %s, camera_info on %s, "
+      "IMU on %s",
+      toString(config_.init_strategy).c_str(), config_.preprocessing.pyramid_levels,
+      depth_sub_.getTopic().c_str(), info_sub_.getTopic().c_str(), imu_sub_.getTopic().c_str());
 }
 
 void TrackerRos::onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info) {
@@ -140,9 +142,9 @@ bool TrackerRos::ensureTracker(const std::string& camera_frame) {
       return false;
     }
   }
-  const std::string child =
-      !settings_.tf_child_frame.empty() ? settings_.tf_child_frame
-                                        : (imu_used ? imu_frame_ : camera_frame);
+  const std::string child = !settings_.tf_child_frame.empty()
+                                ? settings_.tf_child_frame
+                                : (imu_used ? imu_frame_ : camera_frame);
   if (child != camera_frame) {
     try {
       camera_to_child_ = isometryFromTransform(
@@ -171,8 +173,10 @@ void TrackerRos::processPending() {
     const bool queue_full = static_cast<int>(pending_depth_.size()) > settings_.max_pending_frames;
     if (!imu_caught_up && !queue_full) return;
     if (!imu_caught_up && imu_used) {
-      ROS_WARN_THROTTLE(kWarnPeriod, "tracker: no IMU data up to depth stamp %.3f; processing "
-                        "with the IMU data received so far", depth->header.stamp.toSec());
+      ROS_WARN_THROTTLE(kWarnPeriod,
+                        "tracker: no IMU data up to depth stamp %.3f; processing "
+                        "with the IMU data received so far",
+                        depth->header.stamp.toSec());
     }
     pending_depth_.pop_front();
     processDepth(depth);
@@ -233,7 +237,8 @@ void TrackerRos::publish(const FrameReport& report, const sensor_msgs::Image& de
       ROS_WARN("tracker: tracking lost at %.3f: %s", depth.header.stamp.toSec(),
                report.message.c_str());
     } else if (report.state == TrackingState::kOk) {
-      ROS_INFO("tracker: tracking %s", last_state_ == TrackingState::kLost ? "recovered" : "started");
+      ROS_INFO("tracker: tracking %s",
+               last_state_ == TrackingState::kLost ? "recovered" : "started");
     }
     last_state_ = report.state;
   }
@@ -272,8 +277,9 @@ void TrackerRos::publishPose(const Eigen::Isometry3d& camera_pose, const ros::Ti
     const Eigen::Isometry3d delta = last_published_pose_->inverse() * camera_pose;
     const Eigen::AngleAxisd rotation(delta.linear());
     const Eigen::Vector3d angular = rotation.axis() * rotation.angle() / dt;
-    const Eigen::Vector3d linear = camera_pose.linear().transpose() *
-                                   (camera_pose.translation() - last_published_pose_->translation()) / dt;
+    const Eigen::Vector3d linear =
+        camera_pose.linear().transpose() *
+        (camera_pose.translation() - last_published_pose_->translation()) / dt;
     odom.twist.twist.linear.x = linear.x();
     odom.twist.twist.linear.y = linear.y();
     odom.twist.twist.linear.z = linear.z();

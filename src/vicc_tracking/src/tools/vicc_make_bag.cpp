@@ -7,9 +7,9 @@
 #include <iostream>
 #include <string>
 
-#include <boost/make_shared.hpp>
 #include <rosbag/bag.h>
 #include <tf2_msgs/TFMessage.h>
+#include <boost/make_shared.hpp>
 
 #include "vicc_tracking/ros/rig_messages.hpp"
 #include "vicc_tracking/tum_trajectory.hpp"
@@ -71,7 +71,12 @@ Options parseOptions(int argc, char** argv) {
 
 /// /tf_static must be latched on playback; rosbag keeps the flag from the connection header.
 boost::shared_ptr<ros::M_string> latchedHeader() {
+  using tf2_msgs::TFMessage;
   auto header = boost::make_shared<ros::M_string>();
+  // A custom connection header replaces rosbag's, so it must carry the type fields too.
+  (*header)["type"] = ros::message_traits::datatype<TFMessage>();
+  (*header)["md5sum"] = ros::message_traits::md5sum<TFMessage>();
+  (*header)["message_definition"] = ros::message_traits::definition<TFMessage>();
   (*header)["latching"] = "1";
   (*header)["callerid"] = "/imu_publisher";
   return header;

@@ -12,7 +12,8 @@ namespace {
 
 Eigen::Isometry3d pose(double x, double yaw_deg) {
   Eigen::Isometry3d result = Eigen::Isometry3d::Identity();
-  result.linear() = Eigen::AngleAxisd(yaw_deg * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  result.linear() =
+      Eigen::AngleAxisd(yaw_deg * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   result.translation() = Eigen::Vector3d(x, 0.5 * x, 0.1);
   return result;
 }
@@ -49,7 +50,8 @@ TEST(TrajectoryErrorTest, MeasuresDriftAndSkipsUnmatchedStamps) {
 
 TEST(TumTrajectoryTest, WriteReadRoundTrip) {
   const std::string path = ::testing::TempDir() + "vicc_tum_test.tum";
-  std::vector<TimedPose> poses{{1700000000.123456789, pose(0.25, 30.0)}, {1700000000.2, pose(-1.0, -170.0)}};
+  std::vector<TimedPose> poses{{1700000000.123456789, pose(0.25, 30.0)},
+                               {1700000000.2, pose(-1.0, -170.0)}};
   writeTumTrajectory(path, poses);
   const auto back = readTumTrajectory(path);
   ASSERT_EQ(back.size(), 2u);

@@ -39,8 +39,9 @@ class TrackerNodeTest : public ::testing::Test {
     const auto& p = odom.pose.pose;
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
     pose.translation() = Eigen::Vector3d(p.position.x, p.position.y, p.position.z);
-    pose.linear() = Eigen::Quaterniond(p.orientation.w, p.orientation.x, p.orientation.y,
-                                       p.orientation.z).toRotationMatrix();
+    pose.linear() =
+        Eigen::Quaterniond(p.orientation.w, p.orientation.x, p.orientation.y, p.orientation.z)
+            .toRotationMatrix();
     poses_.push_back({odom.header.stamp, pose});
   }
   void onStatus(const vicc_msgs::TrackingStatus& status) { statuses_.push_back(status); }

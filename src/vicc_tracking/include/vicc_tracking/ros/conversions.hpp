@@ -5,13 +5,13 @@
 
 #include <string>
 
-#include <Eigen/Geometry>
 #include <geometry_msgs/Pose.h>
 #include <geometry_msgs/Transform.h>
-#include <opencv2/core.hpp>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/Imu.h>
+#include <Eigen/Geometry>
+#include <opencv2/core.hpp>
 
 #include "vicc_tracking/camera_model.hpp"
 #include "vicc_tracking/imu_types.hpp"

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <rosbag/bag.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
+#include <Eigen/Geometry>
 
 #include "vicc_tracking/imu_types.hpp"
 
@@ -42,7 +42,7 @@ class RigBag {
   std::optional<Eigen::Isometry3d> imuToCamera() const { return imu_to_camera_; }
 
   /// Calls on_frame for every depth image in bag order, with the latest camera_info
-  /// received before it (nullptr if none yet).
+  /// received before it (the first in the bag for images recorded before any).
   void forEachDepthFrame(
       const std::function<void(const sensor_msgs::ImageConstPtr&,
                                const sensor_msgs::CameraInfoConstPtr&)>& on_frame) const;
@@ -60,6 +60,7 @@ class RigBag {
   std::vector<ImuSample> imu_samples_;
   int invalid_imu_ = 0;
   std::optional<Eigen::Isometry3d> imu_to_camera_;
+  sensor_msgs::CameraInfoConstPtr first_camera_info_;
 };
 
 }  // namespace vicc_tracking
