@@ -24,6 +24,12 @@ class ValidatedBatch {
   std::vector<Examination> examinations_;
 };
 
+/// Reads a value given as text (service requests, command lines) with the type of the named
+/// property (or of the property it is the recorded source of). Text that does not fit the
+/// type is kept as a label, so that validation reports it by name.
+Value valueFromText(const EncodingModel& model, const std::string& category,
+                    const std::string& prop_type, const std::string& text);
+
 class ExaminationValidator {
  public:
   /// Throws ConfigError when the view is unknown.

@@ -22,9 +22,12 @@ struct Migration {
 const std::vector<Migration>& schemaMigrations();
 int latestSchemaVersion();
 
-/// Checks that the file is ours (or empty) and brings it to `target_version` (default: the
-/// latest). Throws StoreError kForeign for another application's database, kNewerSchema for
-/// a file written by a newer version.
+/// Reads only: throws StoreError kForeign when the file is another application's database,
+/// kNewerSchema when a newer version of ours wrote it, kCorrupt when it is not SQLite at all.
+void checkDatabaseIdentity(SqliteConnection& connection);
+
+/// Checks the identity, then brings the schema to `target_version` (default: the latest),
+/// one transaction per migration.
 void migrateSchema(SqliteConnection& connection, int target_version = -1);
 
 }  // namespace vicc_anatomy_viz

@@ -64,11 +64,13 @@ class SqliteConnection {
   sqlite3* db_ = nullptr;
 };
 
-/// BEGIN IMMEDIATE ... COMMIT; rolls back when destroyed uncommitted (an exception). The
-/// write lock is taken up front so a busy database is detected before anything is written.
+/// BEGIN ... COMMIT; rolls back when destroyed uncommitted (an exception). A write
+/// transaction (BEGIN IMMEDIATE) takes the write lock up front, so a busy database is detected
+/// before anything is written; a read transaction gives a consistent snapshot.
 class SqliteTransaction {
  public:
-  explicit SqliteTransaction(SqliteConnection& connection);
+  enum class Mode { kWrite, kRead };
+  explicit SqliteTransaction(SqliteConnection& connection, Mode mode = Mode::kWrite);
   ~SqliteTransaction();
   SqliteTransaction(const SqliteTransaction&) = delete;
   SqliteTransaction& operator=(const SqliteTransaction&) = delete;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "vicc_anatomy_viz/encoding_model.hpp"
+#include "vicc_anatomy_viz/examination_validator.hpp"
 #include "vicc_anatomy_viz/patient_record.hpp"
 #include "vicc_anatomy_viz/visual_variables.hpp"
 
@@ -92,12 +93,12 @@ class StatusEncoder {
                        const EncodeOptions& options = {}) const;
 
  private:
-  struct Resolved;
   bool displayed(const Finding& finding, const Examination& examination) const;
   EncodedStructure encodeFinding(const Finding& finding) const;
 
   const EncodingModel& model_;
   const View& view_;
+  ExaminationValidator validator_;  ///< screens records written under an older configuration
 };
 
 }  // namespace vicc_anatomy_viz

@@ -1,6 +1,7 @@
 #include "vicc_anatomy_viz/time_format.hpp"
 
 #include <cctype>
+#include <algorithm>
 #include <cstdio>
 
 namespace vicc_anatomy_viz {

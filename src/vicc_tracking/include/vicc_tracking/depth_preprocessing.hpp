@@ -54,8 +54,11 @@ struct DepthLevel {
 using DepthPyramid = std::vector<DepthLevel>;  ///< index 0 = finest
 
 /// Builds the vertex/normal/radius maps of one level from an undistorted metric depth map.
+/// rays (optional, one per pixel, row-major): the exact normalised ray (x/z, y/z) of the
+/// sensor pixel each depth came from; without it the pinhole ray of the pixel centre is used.
 DepthLevel computeDepthLevel(const cv::Mat1f& depth, const PinholeIntrinsics& intrinsics,
-                             double normal_depth_jump);
+                             double normal_depth_jump,
+                             const std::vector<Eigen::Vector2f>* rays = nullptr);
 
 /// Undistorts, filters and builds the pyramid. Keeps the undistortion maps of the last camera
 /// so consecutive frames of the same camera pay for them only once.
@@ -81,6 +84,18 @@ class DepthPreprocessor {
   bool has_camera_ = false;
   cv::Mat undistort_map1_;
   cv::Mat undistort_map2_;
+  /// Per pyramid level, computed once per camera: the exact ray of every sensor pixel, and
+  /// for every pixel of the undistorted (pinhole) grid the sensor pixel it takes its data
+  /// from (-1: none). Vertices and normals are computed on the sensor grid with exact rays
+  /// and only then moved to the pinhole grid, so nearest-neighbour resampling never bends
+  /// surfaces (it would put a depth on a ray up to half a pixel off: millimetres at grazing
+  /// angles, enough to bias ICP rotations).
+  struct LevelGeometry {
+    PinholeIntrinsics intrinsics;
+    std::vector<Eigen::Vector2f> sensor_rays;
+    std::vector<int> source_index;
+  };
+  std::vector<LevelGeometry> levels_;
 };
 
 /// Halves a depth map: each 2x2 block becomes the mean of its depths that lie within

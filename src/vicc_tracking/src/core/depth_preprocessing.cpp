@@ -58,7 +58,7 @@ PinholeIntrinsics PinholeIntrinsics::halved() const {
 }
 
 DepthLevel computeDepthLevel(const cv::Mat1f& depth, const PinholeIntrinsics& intrinsics,
-                             double normal_depth_jump) {
+                             double normal_depth_jump, const std::vector<Eigen::Vector2f>* rays) {
   DepthLevel level;
   level.intrinsics = intrinsics;
   level.depth = depth;
@@ -76,9 +76,15 @@ DepthLevel computeDepthLevel(const cv::Mat1f& depth, const PinholeIntrinsics& in
     for (int u = 0; u < width; ++u) {
       const float z = row[u];
       if (z <= 0.f) continue;
-      // Eq. 2.4: V(u) = D(u) K^-1 (u, 1)
-      level.vertices[v * width + u] =
-          Eigen::Vector3f((u - intrinsics.cx) * z * inv_fx, (v - intrinsics.cy) * z * inv_fy, z);
+      // Eq. 2.4: V(u) = D(u) K^-1 (u, 1), with the sensor's exact ray when known.
+      const int index = v * width + u;
+      if (rays) {
+        const Eigen::Vector2f& ray = (*rays)[index];
+        level.vertices[index] = Eigen::Vector3f(ray.x() * z, ray.y() * z, z);
+      } else {
+        level.vertices[index] = Eigen::Vector3f((u - intrinsics.cx) * z * inv_fx,
+                                                (v - intrinsics.cy) * z * inv_fy, z);
+      }
       ++level.valid_vertices;
     }
   }
@@ -159,18 +165,55 @@ void DepthPreprocessor::setCamera(const CameraModel& camera) {
   has_camera_ = true;
   undistort_map1_.release();
   undistort_map2_.release();
-  if (!camera_.hasDistortion()) return;
-  const cv::Size size(camera_.width, camera_.height);
-  const cv::Matx33d k = camera_.intrinsicMatrix();
-  // Undistorted images keep the same pinhole K; nearest-neighbour lookup never blends depths
-  // across an edge.
-  if (camera_.model == DistortionModel::kEquidistant) {
-    cv::fisheye::initUndistortRectifyMap(k, camera_.distortionCoefficients(),
-                                         cv::Matx33d::eye(), k, size, CV_16SC2, undistort_map1_,
-                                         undistort_map2_);
-  } else {
-    cv::initUndistortRectifyMap(k, camera_.distortionCoefficients(), cv::Matx33d::eye(), k, size,
-                                CV_16SC2, undistort_map1_, undistort_map2_);
+  levels_.clear();
+
+  PinholeIntrinsics intrinsics;
+  intrinsics.width = camera_.width;
+  intrinsics.height = camera_.height;
+  intrinsics.fx = static_cast<float>(camera_.fx);
+  intrinsics.fy = static_cast<float>(camera_.fy);
+  intrinsics.cx = static_cast<float>(camera_.cx);
+  intrinsics.cy = static_cast<float>(camera_.cy);
+  for (int level = 0; level < config_.pyramid_levels; ++level) {
+    if (level > 0) intrinsics = intrinsics.halved();
+    LevelGeometry geometry;
+    geometry.intrinsics = intrinsics;
+    if (camera_.hasDistortion()) {
+      // The level's sensor: same distortion (it acts on normalised coordinates), scaled K.
+      CameraModel scaled = camera_;
+      scaled.width = intrinsics.width;
+      scaled.height = intrinsics.height;
+      scaled.fx = intrinsics.fx;
+      scaled.fy = intrinsics.fy;
+      scaled.cx = intrinsics.cx;
+      scaled.cy = intrinsics.cy;
+      for (const Eigen::Vector2d& ray : scaled.normalizedRaysForAllPixels()) {
+        geometry.sensor_rays.push_back(ray.cast<float>());
+      }
+      cv::Mat map_x, map_y;
+      const cv::Matx33d k = scaled.intrinsicMatrix();
+      const cv::Size size(intrinsics.width, intrinsics.height);
+      if (camera_.model == DistortionModel::kEquidistant) {
+        cv::fisheye::initUndistortRectifyMap(k, camera_.distortionCoefficients(),
+                                             cv::Matx33d::eye(), k, size, CV_32FC1, map_x, map_y);
+      } else {
+        cv::initUndistortRectifyMap(k, camera_.distortionCoefficients(), cv::Matx33d::eye(), k,
+                                    size, CV_32FC1, map_x, map_y);
+      }
+      if (level == 0) {
+        cv::convertMaps(map_x, map_y, undistort_map1_, undistort_map2_, CV_16SC2, true);
+      }
+      geometry.source_index.assign(static_cast<size_t>(size.area()), -1);
+      for (int v = 0; v < size.height; ++v) {
+        for (int u = 0; u < size.width; ++u) {
+          const int su = static_cast<int>(std::lround(map_x.at<float>(v, u)));
+          const int sv = static_cast<int>(std::lround(map_y.at<float>(v, u)));
+          if (su < 0 || sv < 0 || su >= size.width || sv >= size.height) continue;
+          geometry.source_index[static_cast<size_t>(v) * size.width + u] = sv * size.width + su;
+        }
+      }
+    }
+    levels_.push_back(std::move(geometry));
   }
 }
 
@@ -182,6 +225,35 @@ cv::Mat1f DepthPreprocessor::undistort(const cv::Mat1f& metric_depth) const {
   return undistorted;
 }
 
+namespace {
+
+/// Moves a level computed on the sensor grid onto the pinhole grid (nearest sensor pixel).
+DepthLevel resampleLevel(const DepthLevel& sensor, const PinholeIntrinsics& intrinsics,
+                         const std::vector<int>& source_index) {
+  DepthLevel level;
+  level.intrinsics = intrinsics;
+  const size_t count = source_index.size();
+  level.depth = cv::Mat1f(intrinsics.height, intrinsics.width, 0.f);
+  level.vertices.assign(count, Eigen::Vector3f::Zero());
+  level.normals.assign(count, Eigen::Vector3f::Zero());
+  level.radii.assign(count, 0.f);
+  float* depth = level.depth.ptr<float>(0);
+  for (size_t i = 0; i < count; ++i) {
+    const int source = source_index[i];
+    if (source < 0 || !sensor.hasVertex(source)) continue;
+    level.vertices[i] = sensor.vertices[source];
+    depth[i] = sensor.vertices[source].z();
+    ++level.valid_vertices;
+    if (!sensor.hasNormal(source)) continue;
+    level.normals[i] = sensor.normals[source];
+    level.radii[i] = sensor.radii[source];
+    ++level.valid_normals;
+  }
+  return level;
+}
+
+}  // namespace
+
 DepthPyramid DepthPreprocessor::process(const cv::Mat& raw) const {
   if (!has_camera_) throw std::logic_error("DepthPreprocessor: no camera set");
   if (raw.cols != camera_.width || raw.rows != camera_.height) {
@@ -190,7 +262,7 @@ DepthPyramid DepthPreprocessor::process(const cv::Mat& raw) const {
                                 std::to_string(camera_.width) + "x" +
                                 std::to_string(camera_.height));
   }
-  cv::Mat1f depth = undistort(toMetricDepth(raw));
+  cv::Mat1f depth = toMetricDepth(raw).clone();  // never modify the caller's image
   const float min_depth = static_cast<float>(config_.min_depth);
   const float max_depth = static_cast<float>(config_.max_depth);
   depth.forEach([&](float& d, const int*) {
@@ -208,18 +280,19 @@ DepthPyramid DepthPreprocessor::process(const cv::Mat& raw) const {
 
   DepthPyramid pyramid;
   pyramid.reserve(config_.pyramid_levels);
-  PinholeIntrinsics intrinsics;
-  intrinsics.width = camera_.width;
-  intrinsics.height = camera_.height;
-  intrinsics.fx = static_cast<float>(camera_.fx);
-  intrinsics.fy = static_cast<float>(camera_.fy);
-  intrinsics.cx = static_cast<float>(camera_.cx);
-  intrinsics.cy = static_cast<float>(camera_.cy);
-  pyramid.push_back(computeDepthLevel(depth, intrinsics, config_.normal_depth_jump));
-  for (int level = 1; level < config_.pyramid_levels; ++level) {
-    depth = downsampleDepth(depth, static_cast<float>(config_.pyramid_depth_threshold));
-    intrinsics = intrinsics.halved();
-    pyramid.push_back(computeDepthLevel(depth, intrinsics, config_.normal_depth_jump * 2.0));
+  for (int level = 0; level < config_.pyramid_levels; ++level) {
+    if (level > 0) {
+      depth = downsampleDepth(depth, static_cast<float>(config_.pyramid_depth_threshold));
+    }
+    const LevelGeometry& geometry = levels_[level];
+    const double jump = config_.normal_depth_jump * (level > 0 ? 2.0 : 1.0);
+    if (geometry.source_index.empty()) {
+      pyramid.push_back(computeDepthLevel(depth, geometry.intrinsics, jump));
+    } else {
+      const DepthLevel sensor =
+          computeDepthLevel(depth, geometry.intrinsics, jump, &geometry.sensor_rays);
+      pyramid.push_back(resampleLevel(sensor, geometry.intrinsics, geometry.source_index));
+    }
   }
   return pyramid;
 }

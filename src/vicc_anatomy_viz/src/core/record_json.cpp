@@ -1,0 +1,233 @@
+#include "vicc_anatomy_viz/record_json.hpp"
+
+#include <climits>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "vicc_anatomy_viz/errors.hpp"
+#include "vicc_anatomy_viz/time_format.hpp"
+
+namespace vicc_anatomy_viz {
+
+using nlohmann::json;
+
+namespace {
+
+/// Collects problems by JSON path instead of stopping at the first one.
+class Reader {
+ public:
+  explicit Reader(std::string source) : source_(std::move(source)) {}
+
+  void problem(const std::string& path, const std::string& message) {
+    problems_.push_back(path + ": " + message);
+  }
+  const std::vector<std::string>& problems() const { return problems_; }
+
+  std::string text(const json& object, const std::string& key, const std::string& path,
+                   bool required = true) {
+    const auto it = object.find(key);
+    if (it == object.end() || it->is_null()) {
+      if (required) problem(path + "." + key, "missing");
+      return "";
+    }
+    if (!it->is_string()) {
+      problem(path + "." + key, "must be text");
+      return "";
+    }
+    return it->get<std::string>();
+  }
+
+  const json* array(const json& object, const std::string& key, const std::string& path) {
+    const auto it = object.find(key);
+    if (it == object.end() || !it->is_array()) {
+      problem(path + "." + key, "must be a list");
+      return nullptr;
+    }
+    return &*it;
+  }
+
+  std::int64_t timestamp(const json& object, const std::string& path) {
+    const std::string text = this->text(object, "taken_at", path);
+    if (text.empty()) return 0;
+    const auto seconds = parseTimestamp(text);
+    if (!seconds) {
+      problem(path + ".taken_at", "'" + text + "' is not an ISO 8601 date or date-time");
+      return 0;
+    }
+    return *seconds;
+  }
+
+  Finding finding(const json& object, const std::string& path) {
+    Finding finding;
+    if (!object.is_object()) {
+      problem(path, "a finding must be an object");
+      return finding;
+    }
+    finding.category = text(object, "category", path);
+    finding.structure = text(object, "structure", path);
+    const std::string side_text = text(object, "side", path, false);
+    const auto side = sideFromString(side_text);
+    if (!side) {
+      problem(path + ".side", "'" + side_text + "' is not left, right or none");
+    } else {
+      finding.side = *side;
+    }
+    const auto values = object.find("values");
+    if (values == object.end() || !values->is_object()) {
+      problem(path + ".values", "must be an object of property values");
+      return finding;
+    }
+    for (const auto& [prop_type, value] : values->items()) {
+      const std::string where = path + ".values." + prop_type;
+      if (value.is_number_integer()) {
+        const auto number = value.get<long long>();
+        if (number < INT_MIN || number > INT_MAX) {
+          problem(where, "number out of range");
+        } else {
+          finding.values[prop_type] = Value::number(static_cast<int>(number));
+        }
+      } else if (value.is_number()) {
+        problem(where, value.dump() + " is not an integer");
+      } else if (value.is_string()) {
+        finding.values[prop_type] = Value::label(value.get<std::string>());
+      } else if (value.is_boolean()) {
+        finding.values[prop_type] = Value::label(value.get<bool>() ? "true" : "false");
+      } else {
+        problem(where, "must be an integer, a label or a boolean");
+      }
+    }
+    return finding;
+  }
+
+  Examination examination(const json& object, const std::string& patient_id,
+                          const std::string& path) {
+    Examination examination;
+    examination.patient_id = patient_id;
+    examination.source = source_;
+    if (!object.is_object()) {
+      problem(path, "an examination must be an object");
+      return examination;
+    }
+    examination.taken_at = timestamp(object, path);
+    if (const json* findings = array(object, "findings", path)) {
+      for (std::size_t i = 0; i < findings->size(); ++i) {
+        examination.findings.push_back(
+            finding((*findings)[i], path + ".findings[" + std::to_string(i) + "]"));
+      }
+    }
+    return examination;
+  }
+
+  std::string patientId(const json& object, const std::string& key, const std::string& path) {
+    const std::string id = text(object, key, path);
+    const std::string reason = id.empty() ? "" : patientIdProblem(id);
+    if (!reason.empty()) problem(path + "." + key, reason);
+    return id;
+  }
+
+ private:
+  std::string source_;
+  std::vector<std::string> problems_;
+};
+
+json valueToJson(const Value& value) {
+  if (value.isNumber()) return value.asNumber();
+  // Only binary domains use these labels; they travel as JSON booleans.
+  if (value.asLabel() == "true") return true;
+  if (value.asLabel() == "false") return false;
+  return value.asLabel();
+}
+
+json findingsToJson(const Examination& examination) {
+  json findings = json::array();
+  for (const auto& finding : examination.findings) {
+    json values = json::object();
+    for (const auto& [prop_type, value] : finding.values) values[prop_type] = valueToJson(value);
+    findings.push_back({{"category", finding.category},
+                        {"structure", finding.structure},
+                        {"side", toString(finding.side)},
+                        {"values", values}});
+  }
+  return findings;
+}
+
+}  // namespace
+
+std::vector<Examination> examinationsFromJson(const json& document, const std::string& source) {
+  if (!document.is_object()) throw ExchangeError("a records document must be a JSON object");
+  const std::string format = document.value("format", "");
+  if (format != kRecordsFormat && format != kExaminationFormat) {
+    throw ExchangeError("unknown document format '" + format + "' (expected '" + kRecordsFormat +
+                        "', '" + kExaminationFormat + "' or a FHIR Bundle)");
+  }
+  if (!document.contains("version") || document["version"] != 1) {
+    throw ExchangeError("unsupported " + format + " version (this program reads version 1)");
+  }
+  Reader reader(source);
+  std::vector<Examination> examinations;
+  if (format == kExaminationFormat) {
+    const std::string patient = reader.patientId(document, "patient", "$");
+    examinations.push_back(reader.examination(document, patient, "$"));
+  } else if (const json* patients = reader.array(document, "patients", "$")) {
+    for (std::size_t p = 0; p < patients->size(); ++p) {
+      const json& patient = (*patients)[p];
+      const std::string path = "$.patients[" + std::to_string(p) + "]";
+      if (!patient.is_object()) {
+        reader.problem(path, "a patient must be an object");
+        continue;
+      }
+      const std::string id = reader.patientId(patient, "id", path);
+      if (const json* list = reader.array(patient, "examinations", path)) {
+        for (std::size_t e = 0; e < list->size(); ++e) {
+          examinations.push_back(
+              reader.examination((*list)[e], id, path + ".examinations[" + std::to_string(e) + "]"));
+        }
+      }
+    }
+  }
+  if (!reader.problems().empty()) throw ValidationError(reader.problems());
+  return examinations;
+}
+
+json examinationToJson(const Examination& examination) {
+  return {{"format", kExaminationFormat},
+          {"version", 1},
+          {"patient", examination.patient_id},
+          {"taken_at", formatTimestamp(examination.taken_at)},
+          {"findings", findingsToJson(examination)}};
+}
+
+json recordsToJson(const std::vector<Examination>& examinations) {
+  json patients = json::array();
+  std::map<std::string, std::size_t> index;
+  for (const auto& examination : examinations) {
+    auto it = index.find(examination.patient_id);
+    if (it == index.end()) {
+      it = index.emplace(examination.patient_id, patients.size()).first;
+      patients.push_back({{"id", examination.patient_id}, {"examinations", json::array()}});
+    }
+    patients[it->second]["examinations"].push_back(
+        {{"taken_at", formatTimestamp(examination.taken_at)},
+         {"findings", findingsToJson(examination)}});
+  }
+  return {{"format", kRecordsFormat}, {"version", 1}, {"patients", patients}};
+}
+
+json parseJsonText(const std::string& text, const std::string& origin) {
+  try {
+    return json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw ExchangeError(origin + ": invalid JSON (" + std::string(e.what()) + ")");
+  }
+}
+
+std::string readTextFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ExchangeError("cannot read '" + path + "'");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+}  // namespace vicc_anatomy_viz

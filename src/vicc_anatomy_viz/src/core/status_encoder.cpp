@@ -1,0 +1,265 @@
+#include "vicc_anatomy_viz/status_encoder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "vicc_anatomy_viz/errors.hpp"
+
+namespace vicc_anatomy_viz {
+
+namespace {
+
+/// A property's value in a finding: recorded, derived from its recorded source, or the
+/// normal value assumed when the property was omitted.
+struct ResolvedValue {
+  Value value;
+  std::string raw;      ///< as recorded (the source value for derived properties)
+  bool derived = false;
+};
+
+ResolvedValue resolve(const Property& prop, const Finding& finding) {
+  const auto given = finding.values.find(prop.prop_type);
+  if (given != finding.values.end()) return {given->second, given->second.toString(), false};
+  if (prop.source) {
+    const auto source = finding.values.find(prop.source->prop_type);
+    if (source != finding.values.end()) {
+      const auto derived = prop.source->derive.find(source->second.toString());
+      if (derived != prop.source->derive.end()) {
+        return {derived->second, source->second.toString(), true};
+      }
+    }
+  }
+  const Value normal = prop.defaultValue().value_or(Value());
+  return {normal, normal.toString(), false};
+}
+
+std::string describeValue(const Property& prop, const ResolvedValue& resolved) {
+  std::ostringstream out;
+  out << prop.label << " " << resolved.value.toString();
+  if (resolved.derived) {
+    out << " (" << prop.source->label << " " << resolved.raw;
+    if (prop.source->domain.type == DataType::kNumerical) out << " [" << prop.source->domain.describe() << "]";
+    out << ")";
+  } else if (prop.domain.type == DataType::kNumerical) {
+    out << " [" << prop.domain.describe() << "]";
+  }
+  return out.str();
+}
+
+const Finding* findFinding(const Examination& examination, const std::string& category,
+                           const std::string& structure, Side side) {
+  for (const auto& finding : examination.findings) {
+    if (finding.category == category && finding.structure == structure && finding.side == side) {
+      return &finding;
+    }
+  }
+  return nullptr;
+}
+
+double lerp(double weak, double strong, double t) { return weak + t * (strong - weak); }
+
+}  // namespace
+
+StatusEncoder::StatusEncoder(const EncodingModel& model, const std::string& view_id)
+    : model_(model), view_(model.view(view_id)), validator_(model, view_id) {}
+
+bool StatusEncoder::displayed(const Finding& finding, const Examination& examination) const {
+  const Category& category = model_.category(finding.category);
+  for (const auto& prop : category.props) {
+    if (!prop.isNormal(resolve(prop, finding).value)) return true;
+  }
+  // DG5 hides normal values, but an asymmetric reflex is read by comparing both sides.
+  if (!category.compare_contralateral || finding.side == Side::kNone) return false;
+  const Finding* other =
+      findFinding(examination, finding.category, finding.structure, contralateral(finding.side));
+  if (!other) return false;
+  for (const auto& prop : category.props) {
+    if (resolve(prop, finding).value != resolve(prop, *other).value) return true;
+  }
+  return false;
+}
+
+EncodedStructure StatusEncoder::encodeFinding(const Finding& finding) const {
+  const AnatomyCatalog& anatomy = model_.anatomy();
+  const Structure& structure = *anatomy.structure(finding.structure);
+  const StructureClass& structure_class = anatomy.classOf(structure);
+  const Category& category = model_.category(finding.category);
+
+  EncodedStructure out;
+  out.structure_id = structure.id;
+  out.side = finding.side;
+  out.structure_class = structure_class.id;
+  out.display_name = anatomy.displayName(structure, finding.side);
+  out.fma_id = structure.fma_id;
+  out.category = category.id;
+  out.proxy = structure_class.proxy;
+  out.hue_deg = model_.hueOf(view_, category.id).degrees;
+  // Without an intensity property the category is shown at full strength.
+  out.saturation = 1.0;
+  out.brightness = 1.0;
+  double alpha = 1.0;
+
+  std::ostringstream overlay;
+  overlay << out.display_name << " \u2014 " << category.label << ":";
+  bool first = true;
+  for (const auto& prop : category.props) {
+    const ResolvedValue resolved = resolve(prop, finding);
+    const LevelMapping& levels = model_.levels(category.id, prop.prop_type);
+    const VisualVariable& variable = model_.variableOf(prop);
+    const int level = levels.levelOf(resolved.value);
+    const int level_count = levels.levelCount();
+    const double t = VisualVariable::spread(level, level_count);
+
+    EncodedProperty encoded;
+    encoded.prop_type = prop.prop_type;
+    encoded.label = prop.label;
+    encoded.value = resolved.raw;
+    encoded.derived_value = resolved.derived ? resolved.value.toString() : "";
+    encoded.visual_variable = variable.id;
+    encoded.level = level;
+    encoded.level_count = level_count;
+    encoded.normal = prop.isNormal(resolved.value);
+    out.properties.push_back(encoded);
+
+    switch (variable.channel) {
+      case Channel::kSaturationBrightness:
+        out.intensity_level = level;
+        out.intensity_levels = level_count;
+        out.saturation = level == 0 ? variable.unindicated_saturation
+                                    : lerp(variable.saturation_weak, variable.saturation_strong, t);
+        out.brightness = level == 0 ? variable.unindicated_brightness
+                                    : lerp(variable.brightness_weak, variable.brightness_strong, t);
+        break;
+      case Channel::kTexture:
+        out.texture_levels = level_count;
+        if (level > 0) {
+          // Few levels use the most distinct of the texture's frequency/amplitude pairs.
+          const int slots = static_cast<int>(variable.texture_levels.size());
+          const auto slot = static_cast<std::size_t>(std::lround(t * (slots - 1)));
+          out.texture_id = variable.id;
+          out.texture_level = level;
+          out.texture_frequency = variable.texture_levels[slot].frequency;
+          out.texture_amplitude = variable.texture_levels[slot].amplitude;
+        }
+        break;
+      case Channel::kTransparency:
+        if (level > 0) alpha = lerp(variable.alpha_weak, variable.alpha_strong, t);
+        break;
+    }
+    overlay << (first ? " " : ", ") << describeValue(prop, resolved);
+    first = false;
+  }
+  out.color = hsvToRgba(out.hue_deg, out.saturation, out.brightness, alpha);
+  out.overlay_text = overlay.str();
+  return out;
+}
+
+EncodedStatus StatusEncoder::encode(const std::string& patient_id,
+                                    const std::optional<Examination>& examination,
+                                    const EncodeOptions& options) const {
+  std::vector<std::string> unknown;
+  for (const auto& hidden : options.hidden_categories) {
+    if (!view_.contains(hidden)) {
+      unknown.push_back("category filter: '" + hidden + "' is not a category of view '" +
+                        view_.id + "'");
+    }
+  }
+  if (!unknown.empty()) throw ValidationError(unknown);
+
+  EncodedStatus status;
+  status.patient_id = patient_id;
+  status.view_id = view_.id;
+  status.requested_date = options.requested_date;
+  status.hidden_categories = options.hidden_categories;
+  status.notes = model_.notes(view_);
+  auto hidden = [&](const std::string& category) {
+    return std::find(options.hidden_categories.begin(), options.hidden_categories.end(),
+                     category) != options.hidden_categories.end();
+  };
+
+  std::map<std::string, std::size_t> counts;
+  if (examination) {
+    status.has_examination = true;
+    status.examination_time = examination->taken_at;
+    const AnatomyCatalog& anatomy = model_.anatomy();
+    // Records are validated when written; one that no longer fits the configuration (changed
+    // since) is left out with a note instead of being drawn wrongly.
+    std::vector<const Finding*> usable;
+    for (const auto& finding : examination->findings) {
+      if (!view_.contains(finding.category)) continue;
+      Examination single;
+      single.patient_id = patient_id;
+      single.taken_at = examination->taken_at;
+      single.findings = {finding};
+      const auto problems = validator_.problems(single);
+      if (problems.empty()) {
+        usable.push_back(&finding);
+      } else {
+        status.notes.push_back("not shown: " + problems.front());
+      }
+    }
+    for (const auto& entry : view_.categories) {
+      std::vector<const Finding*> findings;
+      for (const Finding* finding : usable) {
+        if (finding->category == entry.category && displayed(*finding, *examination)) {
+          findings.push_back(finding);
+        }
+      }
+      std::sort(findings.begin(), findings.end(), [&](const Finding* a, const Finding* b) {
+        const int oa = anatomy.order(a->structure), ob = anatomy.order(b->structure);
+        return oa != ob ? oa < ob : a->side < b->side;
+      });
+      counts[entry.category] = findings.size();
+      if (hidden(entry.category)) continue;
+      for (const Finding* finding : findings) status.structures.push_back(encodeFinding(*finding));
+    }
+    // Spatial non-injectivity in this status: several categories on one structure instance.
+    std::map<std::pair<std::string, Side>, std::vector<std::size_t>> by_structure;
+    std::vector<std::pair<std::string, Side>> order;
+    for (std::size_t i = 0; i < status.structures.size(); ++i) {
+      const auto key = std::make_pair(status.structures[i].structure_id, status.structures[i].side);
+      if (!by_structure.count(key)) order.push_back(key);
+      by_structure[key].push_back(i);
+    }
+    for (const auto& key : order) {
+      const auto& entries = by_structure[key];
+      if (entries.size() < 2) continue;
+      Alternation alternation;
+      alternation.structure_id = key.first;
+      alternation.side = key.second;
+      alternation.display_name = status.structures[entries.front()].display_name;
+      alternation.entries = entries;
+      for (const std::size_t index : entries) {
+        alternation.categories.push_back(status.structures[index].category);
+        status.structures[index].alternation_group = static_cast<int>(status.alternations.size());
+      }
+      status.alternations.push_back(alternation);
+    }
+  }
+
+  for (const auto& entry : view_.categories) {
+    const Category& category = model_.category(entry.category);
+    const NamedHue& hue = model_.hueOf(view_, entry.category);
+    LegendEntry legend;
+    legend.id = category.id;
+    legend.label = category.label;
+    legend.hue_name = hue.name;
+    double saturation = 1.0, brightness = 1.0;
+    for (const auto& prop : category.props) {
+      const VisualVariable& variable = model_.variableOf(prop);
+      if (variable.channel == Channel::kSaturationBrightness) {
+        saturation = variable.saturation_strong;
+        brightness = variable.brightness_strong;
+      }
+    }
+    legend.color = hsvToRgba(hue.degrees, saturation, brightness);
+    legend.visible = !hidden(entry.category);
+    legend.count = counts.count(entry.category) ? counts[entry.category] : 0;
+    status.legend.push_back(legend);
+  }
+  return status;
+}
+
+}  // namespace vicc_anatomy_viz
