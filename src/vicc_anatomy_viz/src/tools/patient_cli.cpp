@@ -1,0 +1,369 @@
+#include "vicc_anatomy_viz/patient_cli.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "vicc_anatomy_viz/encoded_status_json.hpp"
+#include "vicc_anatomy_viz/errors.hpp"
+#include "vicc_anatomy_viz/fhir_bundle.hpp"
+#include "vicc_anatomy_viz/patient_status_service.hpp"
+#include "vicc_anatomy_viz/record_json.hpp"
+#include "vicc_anatomy_viz/time_format.hpp"
+
+namespace vicc_anatomy_viz {
+
+namespace {
+
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+const std::set<std::string> kCommands = {"init", "import", "export", "list", "dates",
+                                         "show", "encode", "record", "check", "config"};
+const std::set<std::string> kFlags = {"--json", "--replace", "--skip-unknown", "--help", "-h"};
+const std::set<std::string> kOptions = {"--db",      "--config", "--anatomy", "--view",
+                                        "--patient", "--date",   "--format",  "--out",
+                                        "--hide",    "--busy-timeout"};
+
+struct CommandLine {
+  std::string command;
+  std::vector<std::string> positional;
+  std::map<std::string, std::string> options;
+  std::set<std::string> flags;
+
+  std::string option(const std::string& name, const std::string& fallback = "") const {
+    const auto it = options.find(name);
+    return it == options.end() ? fallback : it->second;
+  }
+  std::string required(const std::string& name) const {
+    const auto it = options.find(name);
+    if (it == options.end() || it->second.empty()) {
+      throw UsageError(command + " needs " + name);
+    }
+    return it->second;
+  }
+  bool flag(const std::string& name) const { return flags.count(name) > 0; }
+};
+
+CommandLine parse(const std::vector<std::string>& args) {
+  CommandLine line;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::string arg = args[i];
+    std::string value;
+    bool has_value = false;
+    if (arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos) {
+      value = arg.substr(arg.find('=') + 1);
+      arg = arg.substr(0, arg.find('='));
+      has_value = true;
+    }
+    if (kFlags.count(arg)) {
+      if (has_value) throw UsageError(arg + " takes no value");
+      line.flags.insert(arg);
+    } else if (kOptions.count(arg)) {
+      if (!has_value) {
+        if (i + 1 >= args.size()) throw UsageError(arg + " needs a value");
+        value = args[++i];
+      }
+      line.options[arg] = value;
+    } else if (arg.size() > 1 && arg[0] == '-') {
+      throw UsageError("unknown option " + arg);
+    } else if (line.command.empty()) {
+      line.command = arg;
+    } else {
+      line.positional.push_back(arg);
+    }
+  }
+  return line;
+}
+
+void expectPositional(const CommandLine& line, std::size_t count) {
+  if (line.positional.size() != count) {
+    throw UsageError(line.command + " takes " + std::to_string(count) + " file argument" +
+                     (count == 1 ? "" : "s"));
+  }
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    if (!item.empty()) items.push_back(item);
+  }
+  return items;
+}
+
+PatientStatusConfig serviceConfig(const CommandLine& line) {
+  PatientStatusConfig config;
+  config.encoding_config = line.option("--config", defaultEncodingConfigPath());
+  config.anatomy_config = line.option("--anatomy", defaultAnatomyConfigPath());
+  config.view_id = line.option("--view", config.view_id);
+  config.store.path = line.option("--db", defaultDatabasePath());
+  const std::string timeout = line.option("--busy-timeout", "5000");
+  try {
+    std::size_t used = 0;
+    config.store.busy_timeout_ms = std::stoi(timeout, &used);
+    if (used != timeout.size()) throw std::invalid_argument(timeout);
+  } catch (const std::exception&) {
+    throw UsageError("--busy-timeout needs milliseconds, not '" + timeout + "'");
+  }
+  return config;
+}
+
+std::string hexColor(const Rgba& color) {
+  char buffer[16];
+  auto byte = [](float v) { return static_cast<int>(v * 255.0f + 0.5f); };
+  std::snprintf(buffer, sizeof(buffer), "#%02x%02x%02x", byte(color.r), byte(color.g),
+                byte(color.b));
+  return buffer;
+}
+
+/// Reads a records document of ours or a FHIR Bundle.
+std::vector<Examination> readExaminations(const std::string& path, const EncodingModel& model,
+                                          bool skip_unknown, std::ostream& err) {
+  const nlohmann::json document = parseJsonText(readTextFile(path), path);
+  if (isFhirBundle(document)) {
+    FhirImportOptions options;
+    options.skip_unknown = skip_unknown;
+    FhirImport imported = examinationsFromFhirBundle(document, model, options);
+    for (const auto& warning : imported.warnings) err << "warning: " << warning << "\n";
+    return std::move(imported.examinations);
+  }
+  return examinationsFromJson(document, "json");
+}
+
+int commandImport(const CommandLine& line, PatientStatusService& service, std::ostream& out,
+                  std::ostream& err, bool single) {
+  expectPositional(line, 1);
+  const std::string& path = line.positional.front();
+  auto examinations = readExaminations(path, service.model(), line.flag("--skip-unknown"), err);
+  if (single && examinations.size() != 1) {
+    throw ValidationError({path + ": record takes exactly one examination, the file holds " +
+                           std::to_string(examinations.size()) + " (use import)"});
+  }
+  std::set<std::string> patients;
+  for (const auto& examination : examinations) patients.insert(examination.patient_id);
+  const WriteMode mode = line.flag("--replace") ? WriteMode::kReplace : WriteMode::kRejectExisting;
+  const Examination first = examinations.empty() ? Examination() : examinations.front();
+  const std::size_t written = service.record(std::move(examinations), mode);
+  if (single) {
+    out << "recorded " << first.describe() << " in " << service.config().store.path << "\n";
+  } else {
+    out << "imported " << written << " examination(s) of " << patients.size()
+        << " patient(s) from " << path << " into " << service.config().store.path << "\n";
+  }
+  return 0;
+}
+
+int commandExport(const CommandLine& line, PatientStatusService& service, std::ostream& out) {
+  const std::string format = line.option("--format", "json");
+  if (format != "json" && format != "fhir") throw UsageError("--format is json or fhir");
+  const auto examinations = service.store().examinations(line.option("--patient"));
+  const nlohmann::json document = format == "fhir"
+                                      ? examinationsToFhirBundle(examinations, service.model())
+                                      : recordsToJson(examinations);
+  const std::string text = document.dump(2) + "\n";
+  const std::string path = line.option("--out");
+  if (path.empty()) {
+    out << text;
+    return 0;
+  }
+  std::ofstream file(path, std::ios::binary);
+  if (!file || !(file << text)) throw ExchangeError("cannot write '" + path + "'");
+  out << "exported " << examinations.size() << " examination(s) to " << path << "\n";
+  return 0;
+}
+
+int commandList(PatientStatusService& service, std::ostream& out) {
+  const auto patients = service.listPatients();
+  out << std::left << std::setw(20) << "patient" << std::setw(14) << "examinations"
+      << std::setw(22) << "first" << "last\n";
+  for (const auto& patient : patients) {
+    out << std::setw(20) << patient.patient_id << std::setw(14) << patient.examination_count
+        << std::setw(22)
+        << (patient.examination_count ? formatTimestamp(patient.first_examination) : "-")
+        << (patient.examination_count ? formatTimestamp(patient.last_examination) : "-") << "\n";
+  }
+  return 0;
+}
+
+int commandShow(const CommandLine& line, PatientStatusService& service, std::ostream& out) {
+  const std::string patient = line.required("--patient");
+  const std::string date = line.option("--date");
+  const auto examination = service.examinationAt(patient, date);
+  if (!examination) {
+    out << "patient " << patient << " has no examination at or before " << date << "\n";
+    return 0;
+  }
+  const EncodingModel& model = service.model();
+  out << "patient " << patient << ", examination " << formatTimestamp(examination->taken_at)
+      << " (view " << examination->view_id << ", source " << examination->source << ")\n";
+  for (const auto& finding : examination->findings) {
+    const Category* category = model.config().category(finding.category);
+    const Structure* structure = model.anatomy().structure(finding.structure);
+    out << "  " << std::left << std::setw(20) << (category ? category->label : finding.category)
+        << std::setw(44)
+        << (structure ? model.anatomy().displayName(*structure, finding.side) : finding.structure);
+    for (const auto& [prop_type, value] : finding.values) {
+      out << " " << prop_type << "=" << value.toString();
+    }
+    out << "\n";
+  }
+  return 0;
+}
+
+void printStatus(const EncodedStatus& status, std::ostream& out) {
+  if (!status.has_examination) {
+    out << "patient " << status.patient_id << ": no examination at or before "
+        << status.requested_date << "\n";
+    return;
+  }
+  out << "patient " << status.patient_id << ", examination "
+      << formatTimestamp(status.examination_time) << ", view " << status.view_id << "\n";
+  if (status.structures.empty()) out << "  no abnormal findings\n";
+  for (const auto& entry : status.structures) {
+    out << "  " << std::left << std::setw(20) << entry.category << std::setw(44)
+        << entry.display_name << hexColor(entry.color) << "  level " << entry.intensity_level
+        << "/" << entry.intensity_levels;
+    if (!entry.texture_id.empty()) {
+      out << "  texture " << entry.texture_id << " " << entry.texture_level << "/"
+          << entry.texture_levels;
+    }
+    if (entry.proxy) out << "  proxy";
+    if (entry.alternation_group >= 0) out << "  alternates(" << entry.alternation_group << ")";
+    out << "\n      " << entry.overlay_text << "\n";
+  }
+  for (const auto& alternation : status.alternations) {
+    out << "  alternating on " << alternation.display_name << ":";
+    for (const auto& category : alternation.categories) out << " " << category;
+    out << "\n";
+  }
+  for (const auto& note : status.notes) out << "  note: " << note << "\n";
+}
+
+int commandEncode(const CommandLine& line, PatientStatusService& service, std::ostream& out) {
+  const EncodedStatus status = service.encodedStatus(
+      line.required("--patient"), line.option("--date"), splitList(line.option("--hide")));
+  if (line.flag("--json")) {
+    out << toJson(status).dump(2) << "\n";
+  } else {
+    printStatus(status, out);
+  }
+  return 0;
+}
+
+int commandCheck(PatientStatusService& service, std::ostream& out) {
+  RecordStore& store = service.store();
+  const auto rows = store.integrityCheck();
+  const bool ok = rows.size() == 1 && rows.front() == "ok";
+  out << store.path() << ": schema version " << store.schemaVersion() << ", integrity "
+      << (ok ? "ok" : "FAILED") << "\n";
+  if (!ok) {
+    for (const auto& row : rows) out << "  " << row << "\n";
+  }
+  return ok ? 0 : 1;
+}
+
+int commandConfig(PatientStatusService& service, std::ostream& out) {
+  const EncodingModel& model = service.model();
+  const View& view = service.view();
+  out << "view " << view.id << ": " << view.label << "\n";
+  for (const auto& entry : view.categories) {
+    const Category& category = model.category(entry.category);
+    out << "  " << std::left << std::setw(20) << category.id << std::setw(8) << entry.hue;
+    for (std::size_t i = 0; i < category.spatial_refs.size(); ++i) {
+      out << (i ? "|" : "") << category.spatial_refs[i];
+    }
+    out << "\n";
+    for (const auto& prop : category.props) {
+      const LevelMapping& levels = model.levels(category.id, prop.prop_type);
+      out << "      " << std::setw(14) << prop.prop_type << std::setw(12)
+          << toString(prop.domain.type) << std::setw(22) << prop.domain.describe()
+          << prop.visual_variable << " (" << levels.levelCount() << ")"
+          << (levels.quantized() ? " quantized" : "") << "\n";
+    }
+  }
+  for (const auto& note : model.notes(view)) out << "note: " << note << "\n";
+  for (const auto& warning : model.report().global_warnings) out << "warning: " << warning << "\n";
+  return 0;
+}
+
+int dispatch(const CommandLine& line, std::ostream& out, std::ostream& err) {
+  PatientStatusService service(serviceConfig(line));
+  const std::string& command = line.command;
+  if (command == "init") {
+    expectPositional(line, 0);
+    RecordStore& store = service.store();
+    out << "patient database ready: " << store.path() << " (schema version "
+        << store.schemaVersion() << ")\n";
+    return 0;
+  }
+  if (command == "import") return commandImport(line, service, out, err, false);
+  if (command == "record") return commandImport(line, service, out, err, true);
+  if (command == "export") return commandExport(line, service, out);
+  if (command == "list") return commandList(service, out);
+  if (command == "dates") {
+    for (const auto time : service.examinationDates(line.required("--patient"))) {
+      out << formatTimestamp(time) << "\n";
+    }
+    return 0;
+  }
+  if (command == "show") return commandShow(line, service, out);
+  if (command == "encode") return commandEncode(line, service, out);
+  if (command == "check") return commandCheck(service, out);
+  if (command == "config") return commandConfig(service, out);
+  throw UsageError("unknown command '" + command + "'");
+}
+
+}  // namespace
+
+std::string patientCliUsage() {
+  return "usage: vicc_patient <command> [options]\n"
+         "commands:\n"
+         "  init                                  create or migrate the database\n"
+         "  import FILE [--replace] [--skip-unknown]\n"
+         "                                        import our JSON records or a FHIR R4 Bundle\n"
+         "  export [--patient P] [--format json|fhir] [--out FILE]\n"
+         "  list                                  patients with examination counts\n"
+         "  dates --patient P                     examination dates, oldest first\n"
+         "  show --patient P [--date D]           recorded findings at or before D\n"
+         "  encode --patient P [--date D] [--json] [--hide CAT,...]\n"
+         "                                        visually encoded status at or before D\n"
+         "  record FILE [--replace]               record one examination\n"
+         "  check                                 database integrity check\n"
+         "  config                                the view's encoding and its reports\n"
+         "options for all commands:\n"
+         "  --db FILE          patient database (default ~/.ros/vicc/patients.db)\n"
+         "  --config FILE      encoding configuration (default: the package's)\n"
+         "  --anatomy FILE     anatomy catalogue (default: the package's)\n"
+         "  --view ID          view (default neurological_status_sdh)\n"
+         "  --busy-timeout MS  wait for a locked database (default 5000)\n"
+         "dates: YYYY-MM-DD (the end of that day) or YYYY-MM-DDTHH:MM[:SS][Z|+HH:MM]\n";
+}
+
+int runPatientCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  try {
+    const CommandLine line = parse(args);
+    if (line.flag("--help") || line.flag("-h") || line.command.empty()) {
+      (line.command.empty() && !line.flag("--help") && !line.flag("-h") ? err : out)
+          << patientCliUsage();
+      return line.command.empty() && !line.flag("--help") && !line.flag("-h") ? 2 : 0;
+    }
+    if (!kCommands.count(line.command)) throw UsageError("unknown command '" + line.command + "'");
+    return dispatch(line, out, err);
+  } catch (const UsageError& e) {
+    err << "vicc_patient: " << e.what() << "\n" << patientCliUsage();
+    return 2;
+  } catch (const std::exception& e) {
+    err << "vicc_patient: error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace vicc_anatomy_viz
