@@ -34,7 +34,8 @@ void CameraModel::validate() const {
   }
   auto finite_positive = [](double v) { return std::isfinite(v) && v > 0.0; };
   if (!finite_positive(fx) || !finite_positive(fy)) {
-    throw std::invalid_argument("camera focal lengths must be finite and positive");
+    throw std::invalid_argument("camera focal lengths (fx = " + std::to_string(fx) +
+                                ", fy = " + std::to_string(fy) + ") must be finite and positive");
   }
   if (!std::isfinite(cx) || !std::isfinite(cy)) {
     throw std::invalid_argument("camera principal point must be finite");

@@ -1,0 +1,104 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "vicc_tracking/depth_preprocessing.hpp"
+#include "vicc_tracking/sim/rig_simulator.hpp"
+
+using namespace vicc_tracking;
+
+namespace {
+
+TEST(DepthPreprocessingTest, MillimetresAndMetresGiveTheSameDepthAndInvalidBecomesZero) {
+  cv::Mat1w millimetres(2, 3, static_cast<uint16_t>(1234));
+  millimetres(0, 1) = 0;
+  const cv::Mat1f from_mm = toMetricDepth(millimetres);
+  EXPECT_FLOAT_EQ(from_mm(0, 0), 1.234f);
+  EXPECT_FLOAT_EQ(from_mm(0, 1), 0.f);
+  cv::Mat1f metres(2, 3, 1.234f);
+  metres(0, 0) = std::numeric_limits<float>::quiet_NaN();
+  metres(0, 1) = std::numeric_limits<float>::infinity();
+  metres(0, 2) = -std::numeric_limits<float>::infinity();
+  const cv::Mat1f cleaned = toMetricDepth(metres);
+  EXPECT_FLOAT_EQ(cleaned(0, 0), 0.f);
+  EXPECT_FLOAT_EQ(cleaned(0, 1), 0.f);
+  EXPECT_FLOAT_EQ(cleaned(0, 2), 0.f);
+  EXPECT_FLOAT_EQ(cleaned(1, 1), 1.234f);
+  EXPECT_THROW(toMetricDepth(cv::Mat3b(2, 2)), std::invalid_argument);
+}
+
+/// Undistortion round trip: a distorted rendering of a known scene, preprocessed, gives
+/// vertices on the true surface.
+TEST(DepthPreprocessingTest, DistortedRenderingUndistortsOntoTheTrueSurface) {
+  const sim::RigSimulator rig(sim::loadScenario("short_test"));
+  for (const auto model : {DistortionModel::kPlumbBob, DistortionModel::kEquidistant}) {
+    sim::Scenario scenario = rig.scenario();
+    scenario.camera.model = model;
+    if (model == DistortionModel::kEquidistant) scenario.camera.distortion = {0.05, -0.01, 0.002, 0.0};
+    const sim::RigSimulator distorted_rig(scenario);
+    PreprocessingConfig config;
+    config.bilateral_filter = false;
+    config.pyramid_levels = 3;
+    DepthPreprocessor preprocessor(config);
+    preprocessor.setCamera(scenario.camera);
+    const double t = 3.2;
+    const DepthPyramid pyramid = preprocessor.process(distorted_rig.renderDepthNoiseFree(t));
+    ASSERT_EQ(pyramid.size(), 3u);
+    EXPECT_EQ(pyramid[1].intrinsics.width, 112);
+    EXPECT_EQ(pyramid[2].intrinsics.height, 42);
+    const Eigen::Isometry3d pose = distorted_rig.cameraPose(t);
+    const DepthLevel& level = pyramid[0];
+    int checked = 0;
+    double worst = 0.0;
+    for (size_t i = 0; i < level.vertices.size(); i += 7) {
+      if (!level.hasVertex(static_cast<int>(i))) continue;
+      const Eigen::Vector3d point = pose * level.vertices[i].cast<double>();
+      const Eigen::Vector3d direction = point - pose.translation();
+      const auto hit = distorted_rig.scene().raycast(pose.translation(), direction);
+      ASSERT_TRUE(hit.has_value());
+      worst = std::max(worst, std::abs(1.0 - *hit) * direction.norm());
+      ++checked;
+    }
+    EXPECT_GT(checked, 2000);
+    EXPECT_LT(worst, 1e-4) << "metres off the surface, model " << toString(model);
+    EXPECT_GT(level.valid_normals, level.valid_vertices * 8 / 10);
+  }
+}
+
+TEST(DepthPreprocessingTest, WrongSizeOrTypeThrows) {
+  DepthPreprocessor preprocessor{PreprocessingConfig{}};
+  preprocessor.setCamera(sim::picoFlexxCamera());
+  EXPECT_THROW(preprocessor.process(cv::Mat1f(10, 10, 1.f)), std::invalid_argument);
+  EXPECT_THROW(preprocessor.process(cv::Mat3b(171, 224)), std::invalid_argument);
+}
+
+TEST(CameraModelTest, ProjectUnprojectRoundTripOverTheWholeImage) {
+  for (const auto model : {DistortionModel::kPlumbBob, DistortionModel::kEquidistant}) {
+    CameraModel camera = sim::picoFlexxCamera();
+    camera.model = model;
+    if (model == DistortionModel::kEquidistant) camera.distortion = {0.05, -0.01, 0.002, 0.0};
+    double worst = 0.0;
+    for (int v = 0; v < camera.height; v += 5) {
+      for (int u = 0; u < camera.width; u += 5) {
+        const Eigen::Vector2d ray = camera.unprojectToNormalized(Eigen::Vector2d(u, v));
+        const Eigen::Vector2d back = camera.project(Eigen::Vector3d(ray.x(), ray.y(), 1.0));
+        worst = std::max(worst, (back - Eigen::Vector2d(u, v)).norm());
+      }
+    }
+    EXPECT_LT(worst, 1e-3) << toString(model);
+  }
+}
+
+TEST(CameraModelTest, ValidateNamesTheBadField) {
+  CameraModel camera = sim::picoFlexxCamera();
+  camera.fy = -1.0;
+  try {
+    camera.validate();
+    FAIL();
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("fy"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
