@@ -6,7 +6,7 @@ set -euo pipefail
 PACKAGES=(
   # build tooling and ROS 1 from Debian
   build-essential cmake catkin python3-catkin-pkg python3-empy
-  ros-base-dev libroscpp-dev librosbag-dev python3-rosbag ros-robot-dev
+  ros-base-dev libroscpp-dev librosbag-dev python3-rosbag ros-robot-dev rosbash
   python3-rostest python3-roslaunch python3-rostopic python3-rosnode ros-core-dev
   ros-message-generation ros-message-runtime
   ros-std-msgs ros-geometry-msgs ros-sensor-msgs ros-nav-msgs ros-visualization-msgs ros-std-srvs

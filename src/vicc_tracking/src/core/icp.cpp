@@ -141,8 +141,12 @@ IcpResult ProjectiveIcp::align(const DepthPyramid& source, const DepthPyramid& r
     }
   }
 
-  // Quality of the final (finest-level) alignment.
-  last_system = buildSystem(source[0], reference[0], result.pose, config_.max_correspondence_distance);
+  // Quality of the final (finest-level) alignment: the last iteration's system, built one
+  // (converged, hence tiny) step before the final pose, saves a full pass over the image.
+  if (result.iterations_per_level[0] == 0) {
+    last_system =
+        buildSystem(source[0], reference[0], result.pose, config_.max_correspondence_distance);
+  }
   result.inliers = last_system.count;
   result.inlier_ratio =
       source[0].valid_normals > 0 ? static_cast<double>(last_system.count) / source[0].valid_normals

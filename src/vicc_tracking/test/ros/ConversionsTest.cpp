@@ -6,22 +6,13 @@
 #include <sensor_msgs/image_encodings.h>
 
 #include "vicc_tracking/ros/conversions.hpp"
+#include "vicc_tracking/sim/scenario.hpp"
 
 using namespace vicc_tracking;
 
 namespace {
 
-CameraModel picoFlexx() {
-  CameraModel camera;
-  camera.width = 224;
-  camera.height = 171;
-  camera.fx = camera.fy = 210.0;
-  camera.cx = 111.5;
-  camera.cy = 85.5;
-  camera.model = DistortionModel::kPlumbBob;
-  camera.distortion = {-0.12, 0.03, 0.0005, -0.0003, 0.0};
-  return camera;
-}
+CameraModel picoFlexx() { return sim::picoFlexxCamera(); }
 
 TEST(ConversionsTest, CameraInfoRoundTrip) {
   const CameraModel camera = picoFlexx();

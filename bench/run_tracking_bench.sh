@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Reproduces thesis Tables 5.2-5.5 on our simulated scenarios: for every scenario, frame step
+# (All = 1, 1/2 = 2, 1/4 = 4), pyramid levels (3, 2, 1) and ICP initialisation strategy, the
+# loop-closure drift, ICP iterations and failures, measured by vicc_reconstruct on the same
+# recording. Writes bench/results/tracking_tables.md (and the raw JSON reports in bench/out/).
+#   usage: bench/run_tracking_bench.sh [SCENARIO...]   (default: hen hen_duplo office hen_slow)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH=/usr/bin:/bin:$PATH
+set +u; source devel/setup.bash; set -u
+
+SCENARIOS=("$@")
+[ ${#SCENARIOS[@]} -eq 0 ] && SCENARIOS=(hen hen_duplo office hen_slow)
+INITS=(identity ekf constant_velocity imu)
+OUT=bench/out
+mkdir -p "$OUT" bench/results
+
+for scenario in "${SCENARIOS[@]}"; do
+  bag=$OUT/$scenario.bag
+  if [ ! -f "$bag" ] || [ "src/vicc_tracking/config/scenarios/$scenario.yaml" -nt "$bag" ]; then
+    rosrun vicc_tracking vicc_make_bag "$scenario" --out "$bag" --gt "$OUT/${scenario}_gt.tum" 2>/dev/null
+  fi
+  for init in "${INITS[@]}"; do
+    for step in 1 2 4; do
+      for levels in 3 2 1; do
+        report=$OUT/${scenario}_${init}_s${step}_l${levels}.json
+        echo "bench: $scenario --init $init --frame-step $step --levels $levels" >&2
+        # One core: the speed figures are single-threaded.
+        taskset -c 0 rosrun vicc_fusion vicc_reconstruct "$bag" --init "$init" --frame-step "$step" \
+          --levels "$levels" --gt "$OUT/${scenario}_gt.tum" --report "$report" --quiet \
+          2>/dev/null || echo "bench: run failed: $report" >&2
+      done
+    done
+  done
+done
+
+/usr/bin/python3 bench/tracking_tables.py "$OUT" "${SCENARIOS[@]}" > bench/results/tracking_tables.md
+echo "bench: wrote bench/results/tracking_tables.md" >&2
