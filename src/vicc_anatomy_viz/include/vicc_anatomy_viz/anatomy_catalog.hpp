@@ -19,18 +19,18 @@ Side contralateral(Side side);
 enum class Laterality { kBilateral, kMidline };
 
 struct StructureClass {
-  std::string id;          ///< e.g. dermatome
+  std::string id;  ///< e.g. dermatome
   std::string label;
   Laterality laterality = Laterality::kBilateral;
-  bool proxy = false;      ///< too small to colour directly: the avatar draws a proxy
+  bool proxy = false;  ///< too small to colour directly: the avatar draws a proxy
   bool requires_fma_id = false;
 };
 
 struct Structure {
-  std::string id;          ///< e.g. dermatome_L5
+  std::string id;  ///< e.g. dermatome_L5
   std::string class_id;
-  std::string name;        ///< e.g. "Dermatome L5"
-  std::string fma_id;      ///< e.g. "FMA:22533"; "" if not catalogued
+  std::string name;    ///< e.g. "Dermatome L5"
+  std::string fma_id;  ///< e.g. "FMA:22533"; "" if not catalogued
 };
 
 class AnatomyCatalog {

@@ -42,7 +42,7 @@ class Value {
 /// The set of values a property can take.
 struct Domain {
   DataType type = DataType::kNumerical;
-  int min = 0;                      ///< numerical: inclusive bounds
+  int min = 0;  ///< numerical: inclusive bounds
   int max = 0;
   std::vector<std::string> labels;  ///< nominal/ordinal: the labels, ordinal in increasing order
 
@@ -76,10 +76,10 @@ struct Property {
   std::string prop_type;
   std::string label;
   Domain domain;
-  std::vector<Value> normal;       ///< normal values, not displayed (DG5)
-  std::string visual_variable;     ///< M^t: the visual variable encoding this property type
-  int levels = 0;                  ///< requested number of levels (0: as many as distinguishable)
-  std::vector<int> thresholds;     ///< numerical level boundaries (level k+2 starts at thresholds[k])
+  std::vector<Value> normal;    ///< normal values, not displayed (DG5)
+  std::string visual_variable;  ///< M^t: the visual variable encoding this property type
+  int levels = 0;               ///< requested number of levels (0: as many as distinguishable)
+  std::vector<int> thresholds;  ///< numerical level boundaries (level k+2 starts at thresholds[k])
   std::optional<SourceProperty> source;
 
   bool isNormal(const Value& value) const;
@@ -92,7 +92,7 @@ struct Category {
   std::string label;
   std::vector<std::string> spatial_refs;  ///< structure classes, e.g. {dermatome}
   std::vector<Property> props;
-  bool compare_contralateral = false;     ///< show normal values when the other side differs
+  bool compare_contralateral = false;  ///< show normal values when the other side differs
 
   const Property* property(const std::string& prop_type) const;
   /// The property recorded through `prop_type` as its raw source (e.g. muscle_strength).

@@ -37,13 +37,13 @@ class ExaminationValidator {
 
   /// Every problem of one examination, each naming the examination and the finding.
   std::vector<std::string> problems(const Examination& examination) const;
+  /// The problems of one finding on its own (category, structure, side, values).
+  std::vector<std::string> findingProblems(const Finding& finding) const;
   /// Validates all examinations (and that no two share patient and time); sets their view.
   /// Throws ValidationError listing every problem.
   ValidatedBatch validate(std::vector<Examination> examinations) const;
 
  private:
-  std::vector<std::string> findingProblems(const Finding& finding) const;
-
   const EncodingModel& model_;
   const View& view_;
 };

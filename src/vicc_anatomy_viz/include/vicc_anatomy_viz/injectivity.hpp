@@ -18,8 +18,8 @@ struct QuantizationReport {
   std::string category;
   std::string prop_type;
   std::string visual_variable;
-  int values = 0;   ///< displayed values of the domain
-  int levels = 0;   ///< visual levels they are mapped to
+  int values = 0;  ///< displayed values of the domain
+  int levels = 0;  ///< visual levels they are mapped to
   std::string message;
 };
 
@@ -36,7 +36,7 @@ struct InjectivityReport {
   std::vector<std::string> global_warnings;
   std::vector<SpatialConflict> spatial_conflicts;
   std::vector<QuantizationReport> quantizations;
-  std::vector<std::string> level_errors;      ///< levels that cannot be realised (rejected)
+  std::vector<std::string> level_errors;  ///< levels that cannot be realised (rejected)
 };
 
 /// Expects a structurally sound configuration (EncodingConfig::structuralProblems empty).

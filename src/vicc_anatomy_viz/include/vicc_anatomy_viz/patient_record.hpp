@@ -30,7 +30,7 @@ struct Examination {
   std::string patient_id;
   std::int64_t taken_at = 0;  ///< seconds since the Unix epoch, UTC
   std::string view_id;
-  std::string source;         ///< provenance: json, fhir, cli, service
+  std::string source;  ///< provenance: json, fhir, cli, service
   std::vector<Finding> findings;
 
   /// "patient P-1, examination 2023-03-06T08:30:00Z"

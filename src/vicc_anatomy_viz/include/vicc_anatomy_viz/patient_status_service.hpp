@@ -21,7 +21,7 @@ struct PatientStatusConfig {
   std::string anatomy_config;   ///< YAML anatomy catalogue
   std::string view_id = "neurological_status_sdh";
   StoreConfig store;
-  void validate() const;        ///< throws std::invalid_argument naming the field
+  void validate() const;  ///< throws std::invalid_argument naming the field
 };
 
 /// <package>/config/..., found through ROS_PACKAGE_PATH or the build's source directory.

@@ -4,7 +4,8 @@
 //     "examinations": [{"taken_at": "2023-03-06T08:30:00Z", "findings": [{"category": ...,
 //     "structure": ..., "side": "left", "values": {"intensity": 8, "trigger": "constant"}}]}]}]}
 // and a single examination for `record`:
-//   {"format": "vicc-examination", "version": 1, "patient": "P-1", "taken_at": ..., "findings": [...]}
+//   {"format": "vicc-examination", "version": 1, "patient": "P-1", "taken_at": ..., "findings":
+//   [...]}
 
 #include <string>
 #include <vector>

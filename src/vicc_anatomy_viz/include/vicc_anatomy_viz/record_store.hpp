@@ -16,9 +16,9 @@
 namespace vicc_anatomy_viz {
 
 struct StoreConfig {
-  std::string path;             ///< database file; parent directories are created
-  int busy_timeout_ms = 5000;   ///< how long to wait for another writer's lock
-  void validate() const;        ///< throws std::invalid_argument
+  std::string path;            ///< database file; parent directories are created
+  int busy_timeout_ms = 5000;  ///< how long to wait for another writer's lock
+  void validate() const;       ///< throws std::invalid_argument
 };
 
 /// ~/.ros/vicc/patients.db (ROS_HOME is honoured).

@@ -14,7 +14,7 @@ namespace vicc_anatomy_viz {
 constexpr std::int32_t kApplicationId = 0x56494343;
 
 struct Migration {
-  int version;               ///< user_version after this migration
+  int version;  ///< user_version after this migration
   std::string description;
   std::string sql;
 };

@@ -5,6 +5,7 @@
 // categories meet on one structure (spatial non-injectivity, resolved as in 4.3.3).
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -78,7 +79,7 @@ struct EncodedStatus {
 };
 
 struct EncodeOptions {
-  std::string requested_date;                 ///< echoed in the output
+  std::string requested_date;                  ///< echoed in the output
   std::vector<std::string> hidden_categories;  ///< the category filter
 };
 
@@ -95,6 +96,10 @@ class StatusEncoder {
  private:
   bool displayed(const Finding& finding, const Examination& examination) const;
   EncodedStructure encodeFinding(const Finding& finding) const;
+  std::vector<const Finding*> usableFindings(const Examination& examination,
+                                             std::vector<std::string>& notes) const;
+  std::vector<LegendEntry> legend(const std::map<std::string, std::size_t>& counts,
+                                  const std::vector<std::string>& hidden) const;
 
   const EncodingModel& model_;
   const View& view_;

@@ -156,8 +156,7 @@ const Property* Category::propertyWithSource(const std::string& source_prop_type
 }
 
 bool Category::refersTo(const std::string& structure_class) const {
-  return std::find(spatial_refs.begin(), spatial_refs.end(), structure_class) !=
-         spatial_refs.end();
+  return std::find(spatial_refs.begin(), spatial_refs.end(), structure_class) != spatial_refs.end();
 }
 
 bool View::contains(const std::string& category) const { return !hueOf(category).empty(); }

@@ -20,12 +20,9 @@ json toJson(const Rgba& color) {
 json toJson(const EncodedStructure& entry) {
   json properties = json::array();
   for (const auto& prop : entry.properties) {
-    json encoded = {{"prop_type", prop.prop_type},
-                    {"label", prop.label},
-                    {"value", prop.value},
-                    {"visual_variable", prop.visual_variable},
-                    {"level", prop.level},
-                    {"level_count", prop.level_count},
+    json encoded = {{"prop_type", prop.prop_type}, {"label", prop.label},
+                    {"value", prop.value},         {"visual_variable", prop.visual_variable},
+                    {"level", prop.level},         {"level_count", prop.level_count},
                     {"normal", prop.normal}};
     if (!prop.derived_value.empty()) encoded["derived_value"] = prop.derived_value;
     properties.push_back(encoded);

@@ -229,8 +229,8 @@ void checkProperty(const EncodingConfig& config, const Category& category, const
   }
   for (const auto& value : source.domain.values()) {
     if (!source.derive.count(value.toString())) {
-      problems.push_back(where + ": source value " + value.toString() + " of '" +
-                         source.prop_type + "' has no derived value");
+      problems.push_back(where + ": source value " + value.toString() + " of '" + source.prop_type +
+                         "' has no derived value");
     }
   }
   for (const auto& [raw, derived] : source.derive) {

@@ -26,8 +26,7 @@ EncodingModel::EncodingModel(EncodingConfig config, AnatomyCatalog anatomy)
   }
 }
 
-EncodingModel EncodingModel::load(const std::string& config_path,
-                                  const std::string& anatomy_path) {
+EncodingModel EncodingModel::load(const std::string& config_path, const std::string& anatomy_path) {
   return EncodingModel(EncodingConfig::load(config_path), AnatomyCatalog::load(anatomy_path));
 }
 

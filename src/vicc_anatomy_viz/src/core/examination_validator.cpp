@@ -113,9 +113,9 @@ std::vector<std::string> ExaminationValidator::findingProblems(const Finding& fi
       const auto given = finding.values.find(derived->prop_type);
       const Value expected = derived->source->derive.at(value.toString());
       if (given != finding.values.end() && given->second != expected) {
-        problems.push_back("property '" + derived->prop_type + "': '" +
-                           given->second.toString() + "' contradicts " + prop_type + " " +
-                           value.toString() + " (which gives '" + expected.toString() + "')");
+        problems.push_back("property '" + derived->prop_type + "': '" + given->second.toString() +
+                           "' contradicts " + prop_type + " " + value.toString() +
+                           " (which gives '" + expected.toString() + "')");
       }
     } else {
       problems.push_back("unknown property '" + prop_type + "' for category '" + category->id +

@@ -78,10 +78,9 @@ void checkGlobal(const EncodingConfig& config, InjectivityReport& report) {
   }
   for (const auto& [hue, categories] : categories_of_hue) {
     if (categories.size() > 1) {
-      report.global_warnings.push_back("hue '" + hue + "' encodes different categories in " +
-                                       "different views (" +
-                                       quoteList({categories.begin(), categories.end()}) +
-                                       "): not globally injective");
+      report.global_warnings.push_back(
+          "hue '" + hue + "' encodes different categories in " + "different views (" +
+          quoteList({categories.begin(), categories.end()}) + "): not globally injective");
     }
   }
   std::map<std::string, std::set<std::string>> variables_of_type;

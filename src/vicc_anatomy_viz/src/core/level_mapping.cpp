@@ -29,8 +29,8 @@ LevelMapping::LevelMapping(const Category& category, const Property& property,
     const int first = displayed_.front().asNumber();
     const int last = displayed_.back().asNumber();
     if (thresholds_.front() <= first || thresholds_.back() > last) {
-      throw ConfigError(where + ": thresholds must lie within " + std::to_string(first + 1) +
-                        ".." + std::to_string(last) + " so that every level holds a value");
+      throw ConfigError(where + ": thresholds must lie within " + std::to_string(first + 1) + ".." +
+                        std::to_string(last) + " so that every level holds a value");
     }
     level_count_ = static_cast<int>(thresholds_.size()) + 1;
   } else if (property.levels > 0) {
@@ -43,8 +43,9 @@ LevelMapping::LevelMapping(const Category& category, const Property& property,
     level_count_ = std::min(values, range);
   }
   if (level_count_ > range) {
-    throw ConfigError(where + ": " + std::to_string(level_count_) + " levels, but visual variable '" +
-                      variable.id + "' distinguishes only " + std::to_string(range));
+    throw ConfigError(where + ": " + std::to_string(level_count_) +
+                      " levels, but visual variable '" + variable.id + "' distinguishes only " +
+                      std::to_string(range));
   }
 }
 

@@ -26,8 +26,8 @@ std::string packageFile(const std::string& relative) {
     std::string entry;
     while (std::getline(paths, entry, ':')) {
       if (entry.empty()) continue;
-      for (const fs::path& candidate : {fs::path(entry) / "vicc_anatomy_viz" / relative,
-                                        fs::path(entry) / relative}) {
+      for (const fs::path& candidate :
+           {fs::path(entry) / "vicc_anatomy_viz" / relative, fs::path(entry) / relative}) {
         std::error_code error;
         if (fs::exists(candidate, error) &&
             candidate.string().find("vicc_anatomy_viz") != std::string::npos) {
@@ -107,8 +107,8 @@ std::optional<Examination> PatientStatusService::examinationAt(const std::string
   if (!date.empty()) {
     const auto parsed = parseUpperBound(date);
     if (!parsed) {
-      throw ValidationError({"date '" + date +
-                             "' is not ISO 8601 (YYYY-MM-DD or YYYY-MM-DDTHH:MM[:SS][Z])"});
+      throw ValidationError(
+          {"date '" + date + "' is not ISO 8601 (YYYY-MM-DD or YYYY-MM-DDTHH:MM[:SS][Z])"});
     }
     bound = *parsed;
   }
@@ -120,9 +120,9 @@ std::optional<Examination> PatientStatusService::examinationAt(const std::string
   }
 }
 
-EncodedStatus PatientStatusService::encodedStatus(const std::string& patient_id,
-                                                  const std::string& date,
-                                                  const std::vector<std::string>& hidden_categories) {
+EncodedStatus PatientStatusService::encodedStatus(
+    const std::string& patient_id, const std::string& date,
+    const std::vector<std::string>& hidden_categories) {
   const auto examination = examinationAt(patient_id, date);
   EncodeOptions options;
   options.requested_date = date;

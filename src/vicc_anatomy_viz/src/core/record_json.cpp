@@ -180,8 +180,8 @@ std::vector<Examination> examinationsFromJson(const json& document, const std::s
       const std::string id = reader.patientId(patient, "id", path);
       if (const json* list = reader.array(patient, "examinations", path)) {
         for (std::size_t e = 0; e < list->size(); ++e) {
-          examinations.push_back(
-              reader.examination((*list)[e], id, path + ".examinations[" + std::to_string(e) + "]"));
+          examinations.push_back(reader.examination(
+              (*list)[e], id, path + ".examinations[" + std::to_string(e) + "]"));
         }
       }
     }

@@ -77,8 +77,8 @@ RecordStore::RecordStore(const StoreConfig& config) : config_(config) {
   connection_->exec("PRAGMA foreign_keys = ON");
   connection_->exec("PRAGMA synchronous = NORMAL");
   migrateSchema(*connection_);
-  find_patient_ =
-      std::make_unique<SqliteStatement>(*connection_, "SELECT id FROM patients WHERE pseudonym = ?");
+  find_patient_ = std::make_unique<SqliteStatement>(*connection_,
+                                                    "SELECT id FROM patients WHERE pseudonym = ?");
   at_or_before_ = std::make_unique<SqliteStatement>(
       *connection_,
       "SELECT id, taken_at, view_id, source FROM examinations "

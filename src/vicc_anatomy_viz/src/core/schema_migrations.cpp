@@ -12,29 +12,29 @@ const std::vector<Migration>& schemaMigrations() {
        "PRAGMA application_id = " + std::to_string(kApplicationId) +
            ";\n"
            "CREATE TABLE patients (\n"
-       "  id INTEGER PRIMARY KEY,\n"
-       "  pseudonym TEXT NOT NULL UNIQUE,\n"
-       "  created_at INTEGER NOT NULL);\n"
-       "CREATE TABLE examinations (\n"
-       "  id INTEGER PRIMARY KEY,\n"
-       "  patient_id INTEGER NOT NULL REFERENCES patients(id) ON DELETE CASCADE,\n"
-       "  taken_at INTEGER NOT NULL,\n"
-       "  view_id TEXT NOT NULL,\n"
-       "  UNIQUE (patient_id, taken_at));\n"
-       "CREATE TABLE findings (\n"
-       "  id INTEGER PRIMARY KEY,\n"
-       "  examination_id INTEGER NOT NULL REFERENCES examinations(id) ON DELETE CASCADE,\n"
-       "  category TEXT NOT NULL,\n"
-       "  structure TEXT NOT NULL,\n"
-       "  side TEXT NOT NULL CHECK (side IN ('left', 'right', 'none')),\n"
-       "  UNIQUE (examination_id, category, structure, side));\n"
-       "CREATE TABLE finding_values (\n"
-       "  finding_id INTEGER NOT NULL REFERENCES findings(id) ON DELETE CASCADE,\n"
-       "  prop_type TEXT NOT NULL,\n"
-       "  int_value INTEGER,\n"
-       "  text_value TEXT,\n"
-       "  CHECK ((int_value IS NULL) <> (text_value IS NULL)),\n"
-       "  PRIMARY KEY (finding_id, prop_type)) WITHOUT ROWID;\n"},
+           "  id INTEGER PRIMARY KEY,\n"
+           "  pseudonym TEXT NOT NULL UNIQUE,\n"
+           "  created_at INTEGER NOT NULL);\n"
+           "CREATE TABLE examinations (\n"
+           "  id INTEGER PRIMARY KEY,\n"
+           "  patient_id INTEGER NOT NULL REFERENCES patients(id) ON DELETE CASCADE,\n"
+           "  taken_at INTEGER NOT NULL,\n"
+           "  view_id TEXT NOT NULL,\n"
+           "  UNIQUE (patient_id, taken_at));\n"
+           "CREATE TABLE findings (\n"
+           "  id INTEGER PRIMARY KEY,\n"
+           "  examination_id INTEGER NOT NULL REFERENCES examinations(id) ON DELETE CASCADE,\n"
+           "  category TEXT NOT NULL,\n"
+           "  structure TEXT NOT NULL,\n"
+           "  side TEXT NOT NULL CHECK (side IN ('left', 'right', 'none')),\n"
+           "  UNIQUE (examination_id, category, structure, side));\n"
+           "CREATE TABLE finding_values (\n"
+           "  finding_id INTEGER NOT NULL REFERENCES findings(id) ON DELETE CASCADE,\n"
+           "  prop_type TEXT NOT NULL,\n"
+           "  int_value INTEGER,\n"
+           "  text_value TEXT,\n"
+           "  CHECK ((int_value IS NULL) <> (text_value IS NULL)),\n"
+           "  PRIMARY KEY (finding_id, prop_type)) WITHOUT ROWID;\n"},
       {2, "provenance of examinations (source format and time of writing)",
        "ALTER TABLE examinations ADD COLUMN source TEXT NOT NULL DEFAULT 'unknown';\n"
        "ALTER TABLE examinations ADD COLUMN recorded_at INTEGER NOT NULL DEFAULT 0;\n"},
@@ -57,8 +57,7 @@ void checkDatabaseIdentity(SqliteConnection& connection) {
                      "'" + connection.path() +
                          "' is an SQLite database of another application, not a VICC patient "
                          "database (application_id " +
-                         id + ", " + std::to_string(tables) +
-                         " tables); it was left untouched");
+                         id + ", " + std::to_string(tables) + " tables); it was left untouched");
   }
   if (version > latestSchemaVersion()) {
     throw StoreError(StoreError::Kind::kNewerSchema,
@@ -71,6 +70,8 @@ void checkDatabaseIdentity(SqliteConnection& connection) {
 void migrateSchema(SqliteConnection& connection, int target_version) {
   checkDatabaseIdentity(connection);
   if (target_version < 0) target_version = latestSchemaVersion();
+  // Up to date: no write lock needed, so readers open the file while another process writes.
+  if (connection.queryInt("PRAGMA user_version") >= target_version) return;
   for (const auto& migration : schemaMigrations()) {
     if (migration.version > target_version) break;
     SqliteTransaction transaction(connection);

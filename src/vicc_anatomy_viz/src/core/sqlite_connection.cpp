@@ -33,8 +33,7 @@ StoreError::Kind kindOf(int result_code) {
 
 SqliteConnection::SqliteConnection(const std::string& path, int busy_timeout_ms, bool create)
     : path_(path), busy_timeout_ms_(busy_timeout_ms) {
-  const int flags =
-      SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_NOMUTEX;
+  const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_NOMUTEX;
   const int rc = sqlite3_open_v2(path.c_str(), &db_, flags, nullptr);
   if (rc != SQLITE_OK) {
     const std::string detail = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
@@ -88,8 +87,8 @@ std::int64_t SqliteConnection::lastInsertRowid() const { return sqlite3_last_ins
 
 SqliteStatement::SqliteStatement(SqliteConnection& connection, const std::string& sql)
     : connection_(&connection) {
-  const int rc = sqlite3_prepare_v2(connection.handle(), sql.c_str(),
-                                    static_cast<int>(sql.size()), &statement_, nullptr);
+  const int rc = sqlite3_prepare_v2(connection.handle(), sql.c_str(), static_cast<int>(sql.size()),
+                                    &statement_, nullptr);
   if (rc != SQLITE_OK) connection.fail(rc, "preparing \"" + sql.substr(0, 60) + "\"");
 }
 
@@ -107,8 +106,8 @@ SqliteStatement& SqliteStatement::bind(int index, std::int64_t value) {
 }
 
 SqliteStatement& SqliteStatement::bind(int index, const std::string& value) {
-  const int rc = sqlite3_bind_text(statement_, index, value.c_str(),
-                                   static_cast<int>(value.size()), SQLITE_TRANSIENT);
+  const int rc = sqlite3_bind_text(statement_, index, value.c_str(), static_cast<int>(value.size()),
+                                   SQLITE_TRANSIENT);
   if (rc != SQLITE_OK) connection_->fail(rc, "binding a value");
   return *this;
 }

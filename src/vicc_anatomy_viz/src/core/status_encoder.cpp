@@ -15,7 +15,7 @@ namespace {
 /// normal value assumed when the property was omitted.
 struct ResolvedValue {
   Value value;
-  std::string raw;      ///< as recorded (the source value for derived properties)
+  std::string raw;  ///< as recorded (the source value for derived properties)
   bool derived = false;
 };
 
@@ -40,7 +40,8 @@ std::string describeValue(const Property& prop, const ResolvedValue& resolved) {
   out << prop.label << " " << resolved.value.toString();
   if (resolved.derived) {
     out << " (" << prop.source->label << " " << resolved.raw;
-    if (prop.source->domain.type == DataType::kNumerical) out << " [" << prop.source->domain.describe() << "]";
+    if (prop.source->domain.type == DataType::kNumerical)
+      out << " [" << prop.source->domain.describe() << "]";
     out << ")";
   } else if (prop.domain.type == DataType::kNumerical) {
     out << " [" << prop.domain.describe() << "]";
@@ -156,14 +157,92 @@ EncodedStructure StatusEncoder::encodeFinding(const Finding& finding) const {
   return out;
 }
 
+namespace {
+
+/// Spatial non-injectivity in one status: several categories on one structure instance are
+/// listed as an alternation (the first, in view order, is shown by default).
+void markAlternations(EncodedStatus& status) {
+  std::map<std::pair<std::string, Side>, std::vector<std::size_t>> by_structure;
+  std::vector<std::pair<std::string, Side>> order;
+  for (std::size_t i = 0; i < status.structures.size(); ++i) {
+    const auto key = std::make_pair(status.structures[i].structure_id, status.structures[i].side);
+    if (!by_structure.count(key)) order.push_back(key);
+    by_structure[key].push_back(i);
+  }
+  for (const auto& key : order) {
+    const auto& entries = by_structure[key];
+    if (entries.size() < 2) continue;
+    Alternation alternation;
+    alternation.structure_id = key.first;
+    alternation.side = key.second;
+    alternation.display_name = status.structures[entries.front()].display_name;
+    alternation.entries = entries;
+    for (const std::size_t index : entries) {
+      alternation.categories.push_back(status.structures[index].category);
+      status.structures[index].alternation_group = static_cast<int>(status.alternations.size());
+    }
+    status.alternations.push_back(alternation);
+  }
+}
+
+bool contains(const std::vector<std::string>& list, const std::string& item) {
+  return std::find(list.begin(), list.end(), item) != list.end();
+}
+
+}  // namespace
+
+std::vector<const Finding*> StatusEncoder::usableFindings(const Examination& examination,
+                                                          std::vector<std::string>& notes) const {
+  // Records are validated when written; one that no longer fits the configuration (changed
+  // since) is left out with a note instead of being drawn wrongly.
+  std::vector<const Finding*> usable;
+  for (const auto& finding : examination.findings) {
+    if (!view_.contains(finding.category)) continue;
+    const auto problems = validator_.findingProblems(finding);
+    if (problems.empty()) {
+      usable.push_back(&finding);
+    } else {
+      notes.push_back("not shown: " + finding.describe() + ": " + problems.front());
+    }
+  }
+  return usable;
+}
+
+std::vector<LegendEntry> StatusEncoder::legend(const std::map<std::string, std::size_t>& counts,
+                                               const std::vector<std::string>& hidden) const {
+  std::vector<LegendEntry> legend;
+  for (const auto& entry : view_.categories) {
+    const Category& category = model_.category(entry.category);
+    const NamedHue& hue = model_.hueOf(view_, entry.category);
+    LegendEntry item;
+    item.id = category.id;
+    item.label = category.label;
+    item.hue_name = hue.name;
+    double saturation = 1.0, brightness = 1.0;
+    for (const auto& prop : category.props) {
+      const VisualVariable& variable = model_.variableOf(prop);
+      if (variable.channel == Channel::kSaturationBrightness) {
+        saturation = variable.saturation_strong;
+        brightness = variable.brightness_strong;
+      }
+    }
+    item.color = hsvToRgba(hue.degrees, saturation, brightness);
+    item.visible = !contains(hidden, entry.category);
+    const auto count = counts.find(entry.category);
+    item.count = count == counts.end() ? 0 : count->second;
+    legend.push_back(item);
+  }
+  return legend;
+}
+
 EncodedStatus StatusEncoder::encode(const std::string& patient_id,
                                     const std::optional<Examination>& examination,
                                     const EncodeOptions& options) const {
   std::vector<std::string> unknown;
   for (const auto& hidden : options.hidden_categories) {
     if (!view_.contains(hidden)) {
-      unknown.push_back("category filter: '" + hidden + "' is not a category of view '" +
-                        view_.id + "'");
+      unknown.push_back("category filter: '" + hidden + "' is not a category of view '" + view_.id +
+                        "'");
     }
   }
   if (!unknown.empty()) throw ValidationError(unknown);
@@ -174,32 +253,12 @@ EncodedStatus StatusEncoder::encode(const std::string& patient_id,
   status.requested_date = options.requested_date;
   status.hidden_categories = options.hidden_categories;
   status.notes = model_.notes(view_);
-  auto hidden = [&](const std::string& category) {
-    return std::find(options.hidden_categories.begin(), options.hidden_categories.end(),
-                     category) != options.hidden_categories.end();
-  };
-
-  std::map<std::string, std::size_t> counts;
+  std::map<std::string, std::size_t> counts;  // displayed findings per category, filter aside
   if (examination) {
     status.has_examination = true;
     status.examination_time = examination->taken_at;
     const AnatomyCatalog& anatomy = model_.anatomy();
-    // Records are validated when written; one that no longer fits the configuration (changed
-    // since) is left out with a note instead of being drawn wrongly.
-    std::vector<const Finding*> usable;
-    for (const auto& finding : examination->findings) {
-      if (!view_.contains(finding.category)) continue;
-      Examination single;
-      single.patient_id = patient_id;
-      single.taken_at = examination->taken_at;
-      single.findings = {finding};
-      const auto problems = validator_.problems(single);
-      if (problems.empty()) {
-        usable.push_back(&finding);
-      } else {
-        status.notes.push_back("not shown: " + problems.front());
-      }
-    }
+    const auto usable = usableFindings(*examination, status.notes);
     for (const auto& entry : view_.categories) {
       std::vector<const Finding*> findings;
       for (const Finding* finding : usable) {
@@ -212,53 +271,12 @@ EncodedStatus StatusEncoder::encode(const std::string& patient_id,
         return oa != ob ? oa < ob : a->side < b->side;
       });
       counts[entry.category] = findings.size();
-      if (hidden(entry.category)) continue;
+      if (contains(options.hidden_categories, entry.category)) continue;
       for (const Finding* finding : findings) status.structures.push_back(encodeFinding(*finding));
     }
-    // Spatial non-injectivity in this status: several categories on one structure instance.
-    std::map<std::pair<std::string, Side>, std::vector<std::size_t>> by_structure;
-    std::vector<std::pair<std::string, Side>> order;
-    for (std::size_t i = 0; i < status.structures.size(); ++i) {
-      const auto key = std::make_pair(status.structures[i].structure_id, status.structures[i].side);
-      if (!by_structure.count(key)) order.push_back(key);
-      by_structure[key].push_back(i);
-    }
-    for (const auto& key : order) {
-      const auto& entries = by_structure[key];
-      if (entries.size() < 2) continue;
-      Alternation alternation;
-      alternation.structure_id = key.first;
-      alternation.side = key.second;
-      alternation.display_name = status.structures[entries.front()].display_name;
-      alternation.entries = entries;
-      for (const std::size_t index : entries) {
-        alternation.categories.push_back(status.structures[index].category);
-        status.structures[index].alternation_group = static_cast<int>(status.alternations.size());
-      }
-      status.alternations.push_back(alternation);
-    }
+    markAlternations(status);
   }
-
-  for (const auto& entry : view_.categories) {
-    const Category& category = model_.category(entry.category);
-    const NamedHue& hue = model_.hueOf(view_, entry.category);
-    LegendEntry legend;
-    legend.id = category.id;
-    legend.label = category.label;
-    legend.hue_name = hue.name;
-    double saturation = 1.0, brightness = 1.0;
-    for (const auto& prop : category.props) {
-      const VisualVariable& variable = model_.variableOf(prop);
-      if (variable.channel == Channel::kSaturationBrightness) {
-        saturation = variable.saturation_strong;
-        brightness = variable.brightness_strong;
-      }
-    }
-    legend.color = hsvToRgba(hue.degrees, saturation, brightness);
-    legend.visible = !hidden(entry.category);
-    legend.count = counts.count(entry.category) ? counts[entry.category] : 0;
-    status.legend.push_back(legend);
-  }
+  status.legend = legend(counts, options.hidden_categories);
   return status;
 }
 

@@ -1,7 +1,7 @@
 #include "vicc_anatomy_viz/time_format.hpp"
 
-#include <cctype>
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 
 namespace vicc_anatomy_viz {
@@ -63,8 +63,8 @@ std::optional<Parsed> parse(const std::string& text) {
     return std::nullopt;
   }
   Parsed parsed;
-  parsed.seconds = daysFromCivil(year, static_cast<unsigned>(month), static_cast<unsigned>(day)) *
-                   86400;
+  parsed.seconds =
+      daysFromCivil(year, static_cast<unsigned>(month), static_cast<unsigned>(day)) * 86400;
   if (text.size() == 10) {
     parsed.date_only = true;
     return parsed;

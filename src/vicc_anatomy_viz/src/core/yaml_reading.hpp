@@ -30,7 +30,7 @@ class Cursor {
   Cursor optionalChild(const std::string& key) const;
   std::vector<Cursor> sequence(const std::string& key) const;          ///< required sequence
   std::vector<Cursor> optionalSequence(const std::string& key) const;  ///< empty if missing
-  std::vector<Cursor> items() const;  ///< this node as a sequence
+  std::vector<Cursor> items() const;                                   ///< this node as a sequence
   /// A cursor on `node` below this one (e.g. a map entry), named path + suffix.
   Cursor sub(const std::string& path_suffix, const YAML::Node& node) const;
 

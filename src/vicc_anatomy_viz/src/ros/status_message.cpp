@@ -76,7 +76,8 @@ vicc_msgs::EncodedStatus toMessage(const EncodedStatus& status) {
     a.side = toString(alternation.side);
     a.display_name = alternation.display_name;
     a.categories = alternation.categories;
-    for (const auto index : alternation.entries) a.entries.push_back(static_cast<std::uint32_t>(index));
+    for (const auto index : alternation.entries)
+      a.entries.push_back(static_cast<std::uint32_t>(index));
     msg.alternations.push_back(a);
   }
   for (const auto& entry : status.legend) {

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "cli_command_line.hpp"
 #include "vicc_anatomy_viz/encoded_status_json.hpp"
 #include "vicc_anatomy_viz/errors.hpp"
 #include "vicc_anatomy_viz/fhir_bundle.hpp"
@@ -19,85 +20,8 @@ namespace vicc_anatomy_viz {
 
 namespace {
 
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-const std::set<std::string> kCommands = {"init", "import", "export", "list", "dates",
-                                         "show", "encode", "record", "check", "config"};
-const std::set<std::string> kFlags = {"--json", "--replace", "--skip-unknown", "--help", "-h"};
-const std::set<std::string> kOptions = {"--db",      "--config", "--anatomy", "--view",
-                                        "--patient", "--date",   "--format",  "--out",
-                                        "--hide",    "--busy-timeout"};
-
-struct CommandLine {
-  std::string command;
-  std::vector<std::string> positional;
-  std::map<std::string, std::string> options;
-  std::set<std::string> flags;
-
-  std::string option(const std::string& name, const std::string& fallback = "") const {
-    const auto it = options.find(name);
-    return it == options.end() ? fallback : it->second;
-  }
-  std::string required(const std::string& name) const {
-    const auto it = options.find(name);
-    if (it == options.end() || it->second.empty()) {
-      throw UsageError(command + " needs " + name);
-    }
-    return it->second;
-  }
-  bool flag(const std::string& name) const { return flags.count(name) > 0; }
-};
-
-CommandLine parse(const std::vector<std::string>& args) {
-  CommandLine line;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::string arg = args[i];
-    std::string value;
-    bool has_value = false;
-    if (arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos) {
-      value = arg.substr(arg.find('=') + 1);
-      arg = arg.substr(0, arg.find('='));
-      has_value = true;
-    }
-    if (kFlags.count(arg)) {
-      if (has_value) throw UsageError(arg + " takes no value");
-      line.flags.insert(arg);
-    } else if (kOptions.count(arg)) {
-      if (!has_value) {
-        if (i + 1 >= args.size()) throw UsageError(arg + " needs a value");
-        value = args[++i];
-      }
-      line.options[arg] = value;
-    } else if (arg.size() > 1 && arg[0] == '-') {
-      throw UsageError("unknown option " + arg);
-    } else if (line.command.empty()) {
-      line.command = arg;
-    } else {
-      line.positional.push_back(arg);
-    }
-  }
-  return line;
-}
-
-void expectPositional(const CommandLine& line, std::size_t count) {
-  if (line.positional.size() != count) {
-    throw UsageError(line.command + " takes " + std::to_string(count) + " file argument" +
-                     (count == 1 ? "" : "s"));
-  }
-}
-
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
-    if (!item.empty()) items.push_back(item);
-  }
-  return items;
-}
+using cli::CommandLine;
+using cli::UsageError;
 
 PatientStatusConfig serviceConfig(const CommandLine& line) {
   PatientStatusConfig config;
@@ -140,7 +64,7 @@ std::vector<Examination> readExaminations(const std::string& path, const Encodin
 
 int commandImport(const CommandLine& line, PatientStatusService& service, std::ostream& out,
                   std::ostream& err, bool single) {
-  expectPositional(line, 1);
+  line.expectPositional(1);
   const std::string& path = line.positional.front();
   auto examinations = readExaminations(path, service.model(), line.flag("--skip-unknown"), err);
   if (single && examinations.size() != 1) {
@@ -155,8 +79,8 @@ int commandImport(const CommandLine& line, PatientStatusService& service, std::o
   if (single) {
     out << "recorded " << first.describe() << " in " << service.config().store.path << "\n";
   } else {
-    out << "imported " << written << " examination(s) of " << patients.size()
-        << " patient(s) from " << path << " into " << service.config().store.path << "\n";
+    out << "imported " << written << " examination(s) of " << patients.size() << " patient(s) from "
+        << path << " into " << service.config().store.path << "\n";
   }
   return 0;
 }
@@ -182,8 +106,9 @@ int commandExport(const CommandLine& line, PatientStatusService& service, std::o
 
 int commandList(PatientStatusService& service, std::ostream& out) {
   const auto patients = service.listPatients();
-  out << std::left << std::setw(20) << "patient" << std::setw(14) << "examinations"
-      << std::setw(22) << "first" << "last\n";
+  out << std::left << std::setw(20) << "patient" << std::setw(14) << "examinations" << std::setw(22)
+      << "first"
+      << "last\n";
   for (const auto& patient : patients) {
     out << std::setw(20) << patient.patient_id << std::setw(14) << patient.examination_count
         << std::setw(22)
@@ -229,8 +154,8 @@ void printStatus(const EncodedStatus& status, std::ostream& out) {
   if (status.structures.empty()) out << "  no abnormal findings\n";
   for (const auto& entry : status.structures) {
     out << "  " << std::left << std::setw(20) << entry.category << std::setw(44)
-        << entry.display_name << hexColor(entry.color) << "  level " << entry.intensity_level
-        << "/" << entry.intensity_levels;
+        << entry.display_name << hexColor(entry.color) << "  level " << entry.intensity_level << "/"
+        << entry.intensity_levels;
     if (!entry.texture_id.empty()) {
       out << "  texture " << entry.texture_id << " " << entry.texture_level << "/"
           << entry.texture_levels;
@@ -249,7 +174,7 @@ void printStatus(const EncodedStatus& status, std::ostream& out) {
 
 int commandEncode(const CommandLine& line, PatientStatusService& service, std::ostream& out) {
   const EncodedStatus status = service.encodedStatus(
-      line.required("--patient"), line.option("--date"), splitList(line.option("--hide")));
+      line.required("--patient"), line.option("--date"), cli::splitList(line.option("--hide")));
   if (line.flag("--json")) {
     out << toJson(status).dump(2) << "\n";
   } else {
@@ -284,7 +209,7 @@ int commandConfig(PatientStatusService& service, std::ostream& out) {
     for (const auto& prop : category.props) {
       const LevelMapping& levels = model.levels(category.id, prop.prop_type);
       out << "      " << std::setw(14) << prop.prop_type << std::setw(12)
-          << toString(prop.domain.type) << std::setw(22) << prop.domain.describe()
+          << toString(prop.domain.type) << std::setw(32) << prop.domain.describe() << " "
           << prop.visual_variable << " (" << levels.levelCount() << ")"
           << (levels.quantized() ? " quantized" : "") << "\n";
     }
@@ -298,7 +223,7 @@ int dispatch(const CommandLine& line, std::ostream& out, std::ostream& err) {
   PatientStatusService service(serviceConfig(line));
   const std::string& command = line.command;
   if (command == "init") {
-    expectPositional(line, 0);
+    line.expectPositional(0);
     RecordStore& store = service.store();
     out << "patient database ready: " << store.path() << " (schema version "
         << store.schemaVersion() << ")\n";
@@ -349,13 +274,14 @@ std::string patientCliUsage() {
 
 int runPatientCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   try {
-    const CommandLine line = parse(args);
+    const CommandLine line = cli::parseCommandLine(args);
     if (line.flag("--help") || line.flag("-h") || line.command.empty()) {
       (line.command.empty() && !line.flag("--help") && !line.flag("-h") ? err : out)
           << patientCliUsage();
       return line.command.empty() && !line.flag("--help") && !line.flag("-h") ? 2 : 0;
     }
-    if (!kCommands.count(line.command)) throw UsageError("unknown command '" + line.command + "'");
+    if (!cli::kCommands.count(line.command))
+      throw UsageError("unknown command '" + line.command + "'");
     return dispatch(line, out, err);
   } catch (const UsageError& e) {
     err << "vicc_patient: " << e.what() << "\n" << patientCliUsage();

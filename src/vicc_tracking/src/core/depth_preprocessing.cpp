@@ -262,7 +262,7 @@ DepthPyramid DepthPreprocessor::process(const cv::Mat& raw) const {
                                 std::to_string(camera_.width) + "x" +
                                 std::to_string(camera_.height));
   }
-  cv::Mat1f depth = toMetricDepth(raw).clone();  // never modify the caller's image
+  cv::Mat1f depth = toMetricDepth(raw);  // a new image: the caller's stays untouched
   const float min_depth = static_cast<float>(config_.min_depth);
   const float max_depth = static_cast<float>(config_.max_depth);
   depth.forEach([&](float& d, const int*) {
