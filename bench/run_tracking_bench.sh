@@ -32,6 +32,16 @@ for scenario in "${SCENARIOS[@]}"; do
       done
     done
   done
+  # The peer: OpenCV's cv::rgbd::ICPOdometry, identity initialisation, the same frames.
+  for step in 1 2 4; do
+    for levels in 3 2 1; do
+      echo "bench: $scenario peer cv::rgbd::ICPOdometry --frame-step $step --levels $levels" >&2
+      taskset -c 0 rosrun vicc_fusion vicc_peer_odometry "$bag" --frame-step "$step" \
+        --levels "$levels" --gt "$OUT/${scenario}_gt.tum" \
+        --report "$OUT/${scenario}_peer_s${step}_l${levels}.json" 2>/dev/null ||
+        echo "bench: peer run failed" >&2
+    done
+  done
 done
 
 /usr/bin/python3 bench/tracking_tables.py "$OUT" "${SCENARIOS[@]}" > bench/results/tracking_tables.md

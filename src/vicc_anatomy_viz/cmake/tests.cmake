@@ -1,0 +1,34 @@
+# GoogleTest suites for the core classes and the CLI, and a rostest for the node's services.
+# Test data (configuration, samples) is read from the source tree.
+set(VICC_TEST_DEFINITIONS VICC_TEST_PACKAGE_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
+
+catkin_add_gtest(vicc_anatomy_viz_model_test
+  test/core/AnatomyCatalogTest.cpp
+  test/core/DataModelTest.cpp
+  test/core/EncodingConfigTest.cpp
+  test/core/InjectivityTest.cpp
+  test/core/LevelMappingTest.cpp
+  test/core/TimeFormatTest.cpp)
+catkin_add_gtest(vicc_anatomy_viz_encoding_test
+  test/core/ExaminationValidatorTest.cpp
+  test/core/StatusEncoderTest.cpp)
+catkin_add_gtest(vicc_anatomy_viz_store_test test/core/RecordStoreTest.cpp)
+catkin_add_gtest(vicc_anatomy_viz_exchange_test
+  test/core/FhirBundleTest.cpp
+  test/core/RecordJsonTest.cpp)
+catkin_add_gtest(vicc_anatomy_viz_cli_test test/tools/PatientCliTest.cpp)
+
+foreach(test_target vicc_anatomy_viz_model_test vicc_anatomy_viz_encoding_test
+    vicc_anatomy_viz_store_test vicc_anatomy_viz_exchange_test vicc_anatomy_viz_cli_test)
+  target_compile_options(${test_target} PRIVATE ${VICC_WARNINGS})
+  target_compile_definitions(${test_target} PRIVATE ${VICC_TEST_DEFINITIONS})
+  target_link_libraries(${test_target} vicc_anatomy_viz_cli vicc_anatomy_viz_core gtest_main)
+endforeach()
+
+# The node's services against a fresh database file.
+add_rostest_gtest(patient_status_server_rostest test/ros/patient_status_server.test
+  test/ros/PatientStatusServerRostest.cpp)
+target_compile_options(patient_status_server_rostest PRIVATE ${VICC_WARNINGS})
+target_compile_definitions(patient_status_server_rostest PRIVATE ${VICC_TEST_DEFINITIONS})
+target_link_libraries(patient_status_server_rostest vicc_anatomy_viz_ros ${catkin_LIBRARIES})
+add_dependencies(patient_status_server_rostest patient_status_server)

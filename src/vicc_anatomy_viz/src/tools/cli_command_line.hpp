@@ -1,0 +1,38 @@
+#pragma once
+// Command-line parsing of vicc_patient: a command, file arguments, --options with values
+// (also --option=value) and flags; anything unknown is a usage error.
+
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace vicc_anatomy_viz::cli {
+
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+extern const std::set<std::string> kCommands;
+
+struct CommandLine {
+  std::string command;
+  std::vector<std::string> positional;
+  std::map<std::string, std::string> options;
+  std::set<std::string> flags;
+
+  std::string option(const std::string& name, const std::string& fallback = "") const;
+  /// UsageError naming the command when the option is missing.
+  std::string required(const std::string& name) const;
+  bool flag(const std::string& name) const { return flags.count(name) > 0; }
+  /// UsageError unless exactly `count` file arguments were given.
+  void expectPositional(std::size_t count) const;
+};
+
+CommandLine parseCommandLine(const std::vector<std::string>& args);
+/// "a,b,,c" -> {a, b, c}.
+std::vector<std::string> splitList(const std::string& text);
+
+}  // namespace vicc_anatomy_viz::cli
