@@ -17,10 +17,10 @@ if [ ! -f "$BAG" ]; then
 fi
 
 echo
-echo "== offline tracking, every 2nd frame (the thesis's '1/2'), one pyramid level"
+echo "== offline tracking, every 2nd frame (the thesis's '1/2'), two pyramid levels"
 for init in ekf identity; do
   echo "-- --init $init"
-  rosrun vicc_fusion vicc_reconstruct "$BAG" --init "$init" --levels 1 --frame-step 2 \
+  rosrun vicc_fusion vicc_reconstruct "$BAG" --init "$init" --levels 2 --frame-step 2 \
     --gt "bags/${SCENARIO}_gt.tum" --trajectory "$OUT/${SCENARIO}_${init}.tum" \
     --report "$OUT/${SCENARIO}_${init}.json" --cloud "$OUT/${SCENARIO}_${init}.ply" --quiet || true
 done
