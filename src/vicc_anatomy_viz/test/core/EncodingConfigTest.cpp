@@ -9,18 +9,9 @@ namespace {
 
 using test::entryWithId;
 using test::modelFrom;
+using test::rejection;
 using test::shippedConfigYaml;
 using test::shippedModel;
-
-std::string rejection(const YAML::Node& root) {
-  try {
-    modelFrom(root);
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "configuration accepted";
-  return "";
-}
 
 TEST(EncodingConfigTest, ShippedViewHoldsTheFinalCategoriesOfTable41) {
   const EncodingModel& model = shippedModel();

@@ -10,18 +10,9 @@ namespace {
 
 using test::entryWithId;
 using test::modelFrom;
+using test::rejection;
 using test::shippedConfigYaml;
 using test::shippedModel;
-
-std::string rejection(const YAML::Node& root) {
-  try {
-    modelFrom(root);
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "configuration accepted";
-  return "";
-}
 
 TEST(InjectivityTest, LocalCategoryMappingViolationIsRejected) {
   YAML::Node root = shippedConfigYaml();

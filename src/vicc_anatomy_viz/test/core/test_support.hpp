@@ -10,9 +10,11 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
 #include "vicc_anatomy_viz/encoding_model.hpp"
+#include "vicc_anatomy_viz/errors.hpp"
 #include "vicc_anatomy_viz/record_json.hpp"
 
 namespace vicc_anatomy_viz::test {
@@ -40,6 +42,17 @@ inline YAML::Node shippedConfigYaml() { return YAML::LoadFile(encodingConfigPath
 inline EncodingModel modelFrom(const YAML::Node& root) {
   return EncodingModel(EncodingConfig::fromYamlText(YAML::Dump(root), "test-config.yaml"),
                        AnatomyCatalog::load(anatomyConfigPath()));
+}
+
+/// The message a configuration is rejected with; a test failure if it is accepted.
+inline std::string rejection(const YAML::Node& root) {
+  try {
+    modelFrom(root);
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "configuration accepted";
+  return "";
 }
 
 /// The YAML node of a category or view by id.
