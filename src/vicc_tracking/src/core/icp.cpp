@@ -64,11 +64,14 @@ PointToPlaneSystem ProjectiveIcp::buildSystem(const DepthLevel& source, const De
   const int width = source.intrinsics.width;
   const int height = source.intrinsics.height;
 
-  // Accumulate in float per row and in double across rows: exact enough, and fast.
+  // Accumulate the 21 upper-triangle entries of J^T J and J^T r in float per row (written
+  // out: Eigen's rankUpdate is a call per pixel here) and in double across rows.
   PointToPlaneSystem system;
+  const float max_u = static_cast<float>(k.width) - 0.5f;
+  const float max_v = static_cast<float>(k.height) - 0.5f;
   for (int v = 0; v < height; ++v) {
-    Eigen::Matrix<float, 6, 6> row_ata = Eigen::Matrix<float, 6, 6>::Zero();
-    Eigen::Matrix<float, 6, 1> row_atb = Eigen::Matrix<float, 6, 1>::Zero();
+    float row_ata[21] = {};
+    float row_atb[6] = {};
     float row_error = 0.f;
     int row_count = 0;
     for (int u = 0; u < width; ++u) {
@@ -77,31 +80,41 @@ PointToPlaneSystem ProjectiveIcp::buildSystem(const DepthLevel& source, const De
       if (source_normal.z() == 0.f && source_normal.x() == 0.f) continue;
       const Eigen::Vector3f point = rotation * source.vertices[index] + translation;
       if (point.z() <= 0.f) continue;
-      // Eq. 2.6: projective data association.
-      const int ru = static_cast<int>(std::lround(k.fx * point.x() / point.z() + k.cx));
-      const int rv = static_cast<int>(std::lround(k.fy * point.y() / point.z() + k.cy));
-      if (ru < 0 || rv < 0 || ru >= k.width || rv >= k.height) continue;
-      const int reference_index = rv * k.width + ru;
+      // Eq. 2.6: projective data association (rounding to the nearest reference pixel).
+      const float inverse_z = 1.f / point.z();
+      const float pu = k.fx * point.x() * inverse_z + k.cx;
+      const float pv = k.fy * point.y() * inverse_z + k.cy;
+      if (!(pu >= -0.5f && pv >= -0.5f && pu < max_u && pv < max_v)) continue;
+      const int reference_index =
+          static_cast<int>(pv + 0.5f) * k.width + static_cast<int>(pu + 0.5f);
       const Eigen::Vector3f& normal = reference.normals[reference_index];
       if (normal.z() == 0.f && normal.x() == 0.f) continue;
       const Eigen::Vector3f difference = point - reference.vertices[reference_index];
       if (difference.squaredNorm() > max_distance_sq) continue;
       if ((rotation * source_normal).dot(normal) < min_normal_cosine_) continue;
 
-      // Eq. 2.7 linearised: r + (p x n) . w + n . t
+      // Eq. 2.7 linearised: r + (p x n) . w + n . t; p x n written out (GCC 12 reports a
+      // false array-bounds error for Eigen's SSE cross()).
       const float residual = normal.dot(difference);
-      // p x n written out: GCC 12 reports a false array-bounds error for Eigen's SSE cross().
-      Eigen::Matrix<float, 6, 1> jacobian;
-      jacobian << point.y() * normal.z() - point.z() * normal.y(),
-          point.z() * normal.x() - point.x() * normal.z(),
-          point.x() * normal.y() - point.y() * normal.x(), normal;
-      row_ata.selfadjointView<Eigen::Upper>().rankUpdate(jacobian);
-      row_atb += jacobian * residual;
+      const float j[6] = {point.y() * normal.z() - point.z() * normal.y(),
+                          point.z() * normal.x() - point.x() * normal.z(),
+                          point.x() * normal.y() - point.y() * normal.x(),
+                          normal.x(),
+                          normal.y(),
+                          normal.z()};
+      int entry = 0;
+      for (int r = 0; r < 6; ++r) {
+        for (int c = r; c < 6; ++c) row_ata[entry++] += j[r] * j[c];
+        row_atb[r] += j[r] * residual;
+      }
       row_error += residual * residual;
       ++row_count;
     }
-    system.ata += row_ata.cast<double>();
-    system.atb += row_atb.cast<double>();
+    int entry = 0;
+    for (int r = 0; r < 6; ++r) {
+      for (int c = r; c < 6; ++c) system.ata(r, c) += row_ata[entry++];
+      system.atb(r) += row_atb[r];
+    }
     system.squared_error += row_error;
     system.count += row_count;
   }
