@@ -4,6 +4,7 @@ add_library(vicc_tracking_sim
   src/sim/scenario.cpp
   src/sim/scene.cpp
   src/sim/trajectory.cpp
+  src/sim/visible_surface.cpp
 )
 target_compile_options(vicc_tracking_sim PRIVATE ${VICC_WARNINGS})
 target_compile_definitions(vicc_tracking_sim PRIVATE
@@ -15,7 +16,8 @@ if(CATKIN_ENABLE_TESTING)
     test/sim/SceneTest.cpp
     test/sim/TrajectoryTest.cpp
     test/sim/RigSimulatorTest.cpp
-    test/sim/ScenarioTest.cpp)
+    test/sim/ScenarioTest.cpp
+    test/sim/VisibleSurfaceTest.cpp)
   target_compile_options(vicc_tracking_sim_test PRIVATE ${VICC_WARNINGS})
   target_link_libraries(vicc_tracking_sim_test vicc_tracking_sim gtest_main)
 endif()

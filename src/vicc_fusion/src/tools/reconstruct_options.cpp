@@ -21,18 +21,27 @@ void printReconstructUsage(std::ostream& out) {
   out << "usage: vicc_reconstruct BAG [--depth-topic T] [--info-topic T] [--imu-topic T]\n"
          "                        [--init ekf|identity|constant_velocity|imu] [--levels 1|2|3]\n"
          "                        [--frame-step N] [--trajectory OUT.tum] [--cloud OUT.ply]\n"
-         "                        [--report OUT.json] [--gt TRUTH.tum] [--quiet]\n"
-         "Tracks the depth camera through a depth + IMU recording (thesis 5.4).\n"
+         "                        [--mesh OUT.ply] [--report OUT.json] [--gt TRUTH.tum]\n"
+         "                        [--truth-surface SURFACE.ply] [--frame-to-frame | --no-fusion]\n"
+         "                        [--quiet]\n"
+         "Tracks the depth camera through a depth + IMU recording (thesis 5.4) and fuses the\n"
+         "frames into a surfel model it tracks against (frame-to-model, thesis 2.2.2, 5.3).\n"
          "  topics       default to the only Image / CameraInfo / Imu topic in the bag\n"
          "  --init       ICP initial guess: ekf (default, the thesis), identity (KinectFusion),\n"
          "               constant_velocity, imu (plain IMU integration)\n"
          "  --levels     image pyramid levels for ICP (default 3)\n"
          "  --frame-step process every N-th depth frame (thesis: All = 1, 1/2 = 2, 1/4 = 4)\n"
          "  --trajectory camera optical frame in map, TUM format, one line per tracked frame\n"
-         "  --cloud      the tracked frames' points in map, binary PLY with normals\n"
-         "  --report     JSON: frames processed/lost, ICP iterations, Init_EKF/Init_Id, timings\n"
+         "  --cloud      the stable surfels in map: binary PLY with normals, radius, confidence\n"
+         "  --mesh       a surface mesh of the stable surfels (PCL greedy projection), PLY\n"
+         "  --frame-to-frame  fuse, but align each frame to the previous one (comparison)\n"
+         "  --no-fusion  tracking only, frame-to-frame (no model; --cloud/--mesh not allowed)\n"
+         "  --report     JSON: frames processed/lost, ICP iterations, Init_EKF/Init_Id, timings,\n"
+         "               surfel counts, fusion ms per frame, model memory\n"
          "  --gt         ground-truth TUM trajectory (e.g. from vicc_make_bag --gt): the report\n"
          "               adds the pose error, both aligned at the first tracked frame\n"
+         "  --truth-surface  the true surface (vicc_make_bag --surface; needs --gt): the report\n"
+         "               adds the stable surfels' distance to it and its completeness\n"
          "  --quiet      no progress line\n";
 }
 
@@ -64,10 +73,19 @@ bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptio
       options.trajectory_path = value();
     } else if (arg == "--cloud") {
       options.cloud_path = value();
+    } else if (arg == "--mesh") {
+      options.mesh_path = value();
+    } else if (arg == "--frame-to-frame") {
+      options.frame_to_model = false;
+    } else if (arg == "--no-fusion") {
+      options.fusion = false;
+      options.frame_to_model = false;
     } else if (arg == "--report") {
       options.report_path = value();
     } else if (arg == "--gt") {
       options.ground_truth_path = value();
+    } else if (arg == "--truth-surface") {
+      options.truth_surface_path = value();
     } else if (arg == "--quiet") {
       options.quiet = true;
     } else if (!arg.empty() && arg[0] == '-') {
@@ -79,6 +97,15 @@ bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptio
     }
   }
   if (options.bag_path.empty()) throw std::invalid_argument("no bag given");
+  if (!options.fusion && (!options.cloud_path.empty() || !options.mesh_path.empty() ||
+                          !options.truth_surface_path.empty())) {
+    throw std::invalid_argument(
+        "--cloud, --mesh and --truth-surface need the model: drop --no-fusion");
+  }
+  if (!options.truth_surface_path.empty() && options.ground_truth_path.empty()) {
+    throw std::invalid_argument(
+        "--truth-surface needs --gt (to place the model in the truth's frame)");
+  }
   return true;
 }
 

@@ -45,6 +45,41 @@ nlohmann::json makeReport(const ReconstructOptions& options, const ReconstructRu
   report["wall_time_s"] = run.wall_time_s;
   report["frames_per_second"] = run.wall_time_s > 0 ? processed / run.wall_time_s : 0.0;
   if (!options.cloud_path.empty()) report["cloud_points"] = run.cloud_points;
+  if (!options.mesh_path.empty()) report["mesh_triangles"] = run.mesh_triangles;
+  report["settings"]["fusion"] = options.fusion;
+  report["settings"]["tracking"] = options.frame_to_model ? "frame_to_model" : "frame_to_frame";
+  if (run.fusion) {
+    const ReconstructRun::Fusion& fusion = *run.fusion;
+    const double pipeline_ms = fusion.pipeline_ms.median;
+    report["surfels"] = {{"stable", fusion.stable},
+                         {"unstable", fusion.unstable},
+                         {"memory_bytes", fusion.memory_bytes},
+                         {"refused_at_max_surfels", fusion.surfels_refused}};
+    report["fusion"] = {
+        {"frames_fused", fusion.frames_fused},
+        {"frames_aligned_to_model", fusion.frames_aligned_to_model},
+        {"median_fusion_ms", fusion.fusion_ms.median},
+        {"median_model_prediction_ms", fusion.model_prediction_ms.median},
+        {"median_pipeline_ms", pipeline_ms},
+        {"pipeline_frames_per_second", pipeline_ms > 0 ? 1000.0 / pipeline_ms : 0.0},
+        {"what",
+         "pipeline = preprocessing + prediction (EKF) + ICP + fusion + "
+         "model prediction, per fused frame, one core"}};
+  }
+  if (run.accuracy) {
+    const ModelAccuracy& accuracy = *run.accuracy;
+    report["model_accuracy"] = {
+        {"what",
+         "stable surfels vs the true visible surface (point-to-plane), and the share of "
+         "that surface within completeness_radius_m of a surfel"},
+        {"surfels", accuracy.surfels},
+        {"truth_points", accuracy.truth_points},
+        {"mean_distance_m", accuracy.mean_distance},
+        {"median_distance_m", accuracy.median_distance},
+        {"p95_distance_m", accuracy.p95_distance},
+        {"completeness", accuracy.completeness},
+        {"completeness_radius_m", accuracy.completeness_radius}};
+  }
   if (run.ground_truth_error) {
     const vicc_tracking::TrajectoryError& error = *run.ground_truth_error;
     report["ground_truth_error"] = {

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "reconstruct_options.hpp"
+#include "vicc_fusion/model_accuracy.hpp"
 #include "vicc_tracking/tracking_statistics.hpp"
 #include "vicc_tracking/trajectory_error.hpp"
 
@@ -18,6 +19,15 @@ struct ReconstructRun {
   size_t depth_frames_skipped = 0;  ///< by --frame-step
   double wall_time_s = 0.0;
   size_t cloud_points = 0;
+  size_t mesh_triangles = 0;
+  /// Filled when fusion ran.
+  struct Fusion {
+    size_t stable = 0, unstable = 0, memory_bytes = 0;
+    int frames_fused = 0, frames_aligned_to_model = 0, surfels_refused = 0;
+    vicc_tracking::SampleSummary fusion_ms, model_prediction_ms, pipeline_ms;
+  };
+  std::optional<Fusion> fusion;
+  std::optional<ModelAccuracy> accuracy;
   std::optional<vicc_tracking::TrajectoryError> ground_truth_error;
 };
 

@@ -54,7 +54,8 @@ Options parse(int argc, char** argv) {
   }
   if (options.bag.empty()) throw std::invalid_argument("no bag given");
   if (options.frame_step < 1) throw std::invalid_argument("--frame-step must be >= 1");
-  if (options.levels < 1 || options.levels > 3) throw std::invalid_argument("--levels must be 1..3");
+  if (options.levels < 1 || options.levels > 3)
+    throw std::invalid_argument("--levels must be 1..3");
   return options;
 }
 
@@ -77,7 +78,8 @@ int main(int argc, char** argv) {
     config.pyramid_levels = 1;
     vicc_tracking::DepthPreprocessor preprocessor(config);
     const std::vector<int> all_iterations{10, 5, 4};  // ours, finest level first
-    const std::vector<int> iterations(all_iterations.begin(), all_iterations.begin() + options.levels);
+    const std::vector<int> iterations(all_iterations.begin(),
+                                      all_iterations.begin() + options.levels);
     cv::Ptr<cv::rgbd::ICPOdometry> odometry;
     cv::Mat previous_depth;
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
@@ -85,45 +87,47 @@ int main(int argc, char** argv) {
     std::vector<double> milliseconds;
     int failures = 0, processed = 0;
     size_t index = 0;
-    bag.forEachDepthFrame([&](const sensor_msgs::ImageConstPtr& image,
-                              const sensor_msgs::CameraInfoConstPtr& info) {
-      if (index++ % options.frame_step != 0 || !info) return;
-      if (!odometry) {
-        preprocessor.setCamera(vicc_tracking::cameraModelFromInfo(*info));
-        cv::Mat k(preprocessor.camera().intrinsicMatrix());
-        cv::Mat k_float;
-        k.convertTo(k_float, CV_32F);
-        odometry = cv::rgbd::ICPOdometry::create(k_float, 0.1f, 4.0f, 0.07f, 1.0f, iterations);
-      }
-      const cv::Mat1f depth =
-          preprocessor.undistort(vicc_tracking::toMetricDepth(vicc_tracking::depthImageView(*image)));
-      const double stamp = image->header.stamp.toSec();
-      ++processed;
-      if (!previous_depth.empty()) {
-        const auto start = std::chrono::steady_clock::now();
-        cv::Mat rt;
-        const bool ok = odometry->compute(cv::Mat(), depth, cv::Mat(), cv::Mat(), previous_depth,
-                                          cv::Mat(), rt);
-        milliseconds.push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-        if (ok) {
-          Eigen::Matrix4d motion;
-          cv::cv2eigen(rt, motion);
-          Eigen::Isometry3d step(motion);
-          pose = pose * step;  // rt maps the new frame's points into the previous frame
-        } else {
-          ++failures;
-        }
-      }
-      trajectory.push_back({stamp, pose});
-      previous_depth = depth;
-    });
+    bag.forEachDepthFrame(
+        [&](const sensor_msgs::ImageConstPtr& image, const sensor_msgs::CameraInfoConstPtr& info) {
+          if (index++ % options.frame_step != 0 || !info) return;
+          if (!odometry) {
+            preprocessor.setCamera(vicc_tracking::cameraModelFromInfo(*info));
+            cv::Mat k(preprocessor.camera().intrinsicMatrix());
+            cv::Mat k_float;
+            k.convertTo(k_float, CV_32F);
+            odometry = cv::rgbd::ICPOdometry::create(k_float, 0.1f, 4.0f, 0.07f, 1.0f, iterations);
+          }
+          const cv::Mat1f depth = preprocessor.undistort(
+              vicc_tracking::toMetricDepth(vicc_tracking::depthImageView(*image)));
+          const double stamp = image->header.stamp.toSec();
+          ++processed;
+          if (!previous_depth.empty()) {
+            const auto start = std::chrono::steady_clock::now();
+            cv::Mat rt;
+            const bool ok = odometry->compute(cv::Mat(), depth, cv::Mat(), cv::Mat(),
+                                              previous_depth, cv::Mat(), rt);
+            milliseconds.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count());
+            if (ok) {
+              Eigen::Matrix4d motion;
+              cv::cv2eigen(rt, motion);
+              Eigen::Isometry3d step(motion);
+              pose = pose * step;  // rt maps the new frame's points into the previous frame
+            } else {
+              ++failures;
+            }
+          }
+          trajectory.push_back({stamp, pose});
+          previous_depth = depth;
+        });
     nlohmann::json report;
     report["peer"] = "cv::rgbd::ICPOdometry, identity initialisation";
     report["settings"] = {{"frame_step", options.frame_step}, {"levels", options.levels}};
     report["frames"] = {{"processed", processed}, {"lost", failures}};
     if (trajectory.size() >= 2) {
-      const auto drift = vicc_tracking::poseDifference(trajectory.front().pose, trajectory.back().pose);
+      const auto drift =
+          vicc_tracking::poseDifference(trajectory.front().pose, trajectory.back().pose);
       report["first_to_last_pose"] = {{"position_m", drift.translation},
                                       {"rotation_deg", drift.rotation_deg}};
     }

@@ -6,7 +6,8 @@
 
 #include "reconstruct_options.hpp"
 #include "reconstruct_report.hpp"
-#include "vicc_fusion/cloud_accumulator.hpp"
+#include "vicc_fusion/frame_to_model.hpp"
+#include "vicc_fusion/surfel_io.hpp"
 #include "vicc_tracking/ros/conversions.hpp"
 #include "vicc_tracking/ros/rig_bag.hpp"
 #include "vicc_tracking/tracker.hpp"
@@ -17,7 +18,7 @@
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr int kCloudFrameStride = 5;  // neighbouring frames see the same surface
+using ReconstructRunFusion = vicc_fusion::ReconstructRun::Fusion;
 constexpr int kMaxRepeatedWarnings = 5;
 
 double secondsSince(Clock::time_point start) {
@@ -45,12 +46,11 @@ class Reconstruction {
       imu_to_camera = *bag.imuToCamera();
     }
     tracker_ = std::make_unique<vicc_tracking::Tracker>(config_, imu_to_camera);
-    if (!options.cloud_path.empty()) {
-      vicc_tracking::PreprocessingConfig cloud_preprocessing = config_.preprocessing;
-      cloud_preprocessing.pyramid_levels = 1;
-      cloud_preprocessor_ = std::make_unique<vicc_tracking::DepthPreprocessor>(cloud_preprocessing);
-      cloud_ =
-          std::make_unique<vicc_fusion::CloudAccumulator>(vicc_fusion::CloudAccumulatorConfig{});
+    if (options.fusion) {
+      vicc_fusion::FrameToModelConfig fusion_config;
+      fusion_config.track_against_model = options.frame_to_model;
+      model_ = std::make_unique<vicc_fusion::FrameToModel>(fusion_config);
+      run_.fusion.emplace();
     }
   }
 
@@ -67,15 +67,6 @@ class Reconstruction {
     if (!options_.trajectory_path.empty()) {
       vicc_tracking::writeTumTrajectory(options_.trajectory_path, trajectory_);
     }
-    if (cloud_) {
-      const auto cloud = cloud_->cloud();
-      run_.cloud_points = cloud.size();
-      vicc_fusion::saveCloudPly(options_.cloud_path, cloud);
-    }
-    run_.depth_topic = bag_.topics().depth;
-    run_.info_topic = bag_.topics().camera_info;
-    run_.imu_topic = bag_.topics().imu;
-    run_.depth_frames_in_bag = bag_.depthFrameCount();
     if (!options_.ground_truth_path.empty()) {
       run_.ground_truth_error = vicc_tracking::compareTrajectories(
           trajectory_, vicc_tracking::readTumTrajectory(options_.ground_truth_path));
@@ -86,6 +77,49 @@ class Reconstruction {
                    run_.ground_truth_error->max_position,
                    run_.ground_truth_error->max_rotation_deg);
     }
+    if (model_) {
+      const vicc_fusion::SurfelFusion& fusion = model_->fusion();
+      ReconstructRunFusion& summary = *run_.fusion;
+      summary.stable = fusion.stableCount();
+      summary.unstable = fusion.unstableCount();
+      summary.memory_bytes = fusion.memoryBytes();
+      summary.fusion_ms = vicc_tracking::summarize(fusion_ms_);
+      summary.model_prediction_ms = vicc_tracking::summarize(model_prediction_ms_);
+      summary.pipeline_ms = vicc_tracking::summarize(pipeline_ms_);
+      const vicc_fusion::SurfelVector stable = fusion.stableSurfels();
+      if (!options_.truth_surface_path.empty() && run_.ground_truth_error) {
+        run_.accuracy = vicc_fusion::evaluateModel(
+            stable, vicc_fusion::loadTruthSurface(options_.truth_surface_path),
+            run_.ground_truth_error->alignment);
+        std::fprintf(stderr,
+                     "vicc_reconstruct: model vs true surface: mean %.2f mm, 95%% %.2f mm, "
+                     "completeness %.1f %% (within %.0f mm)\n",
+                     run_.accuracy->mean_distance * 1e3, run_.accuracy->p95_distance * 1e3,
+                     run_.accuracy->completeness * 100, run_.accuracy->completeness_radius * 1e3);
+      }
+      if (!options_.cloud_path.empty()) {
+        vicc_fusion::saveSurfelsPly(options_.cloud_path, stable);
+        run_.cloud_points = stable.size();
+      }
+      if (!options_.mesh_path.empty()) {
+        const pcl::PolygonMesh mesh = vicc_fusion::meshSurfels(stable);
+        vicc_fusion::saveMeshPly(options_.mesh_path, mesh);
+        run_.mesh_triangles = mesh.polygons.size();
+      }
+      std::fprintf(stderr,
+                   "vicc_reconstruct: model: %zu stable + %zu unstable surfels (%.1f MB); "
+                   "median fusion %.2f ms, model prediction %.2f ms, pipeline %.2f ms per frame "
+                   "(%.0f frames/s); %d of %d frames aligned to the model\n",
+                   summary.stable, summary.unstable, summary.memory_bytes / 1e6,
+                   summary.fusion_ms.median, summary.model_prediction_ms.median,
+                   summary.pipeline_ms.median,
+                   summary.pipeline_ms.median > 0 ? 1000.0 / summary.pipeline_ms.median : 0.0,
+                   summary.frames_aligned_to_model, statistics_.framesTracked());
+    }
+    run_.depth_topic = bag_.topics().depth;
+    run_.info_topic = bag_.topics().camera_info;
+    run_.imu_topic = bag_.topics().imu;
+    run_.depth_frames_in_bag = bag_.depthFrameCount();
     const nlohmann::json report = vicc_fusion::makeReport(options_, run_, statistics_);
     if (!options_.report_path.empty()) {
       std::ofstream out(options_.report_path);
@@ -138,7 +172,6 @@ class Reconstruction {
         if (changed) {
           const vicc_tracking::CameraModel camera = vicc_tracking::cameraModelFromInfo(*info);
           tracker_->setCamera(camera);
-          if (cloud_preprocessor_) cloud_preprocessor_->setCamera(camera);
         }
         last_info_ = info;
       } catch (const std::exception& error) {
@@ -155,15 +188,26 @@ class Reconstruction {
     }
     if (!report.accepted && !report.message.empty()) warn("depth frame dropped: " + report.message);
     statistics_.add(report);
-    if (report.tracked()) {
-      trajectory_.push_back({stamp, report.camera_pose});
-      if (cloud_ && report.state == vicc_tracking::TrackingState::kOk &&
-          tracked_for_cloud_++ % kCloudFrameStride == 0) {
-        const auto pyramid = cloud_preprocessor_->process(vicc_tracking::depthImageView(*image));
-        cloud_->addFrame(pyramid.front(), report.camera_pose);
-      }
-    }
+    if (report.tracked()) trajectory_.push_back({stamp, report.camera_pose});
+    if (report.aligned_to_model && run_.fusion) ++run_.fusion->frames_aligned_to_model;
+    if (model_) fuse(report);
     if (!options_.quiet && secondsSince(last_progress_) > 1.0) printProgress(false);
+  }
+
+  void fuse(const vicc_tracking::FrameReport& report) {
+    const vicc_fusion::FrameToModelStep step = model_->afterFrame(*tracker_, report);
+    if (!step.fused) return;
+    ReconstructRunFusion& summary = *run_.fusion;
+    ++summary.frames_fused;
+    summary.surfels_refused += step.fusion.refused;
+    if (step.fusion.refused > 0 && summary.surfels_refused == step.fusion.refused) {
+      warn("the model reached its maximum of " +
+           std::to_string(model_->config().fusion.max_surfels) +
+           " surfels: new surface is no longer added");
+    }
+    fusion_ms_.push_back(step.fusion_ms);
+    model_prediction_ms_.push_back(step.prediction_ms);
+    pipeline_ms_.push_back(report.timings.total_ms + step.fusion_ms + step.prediction_ms);
   }
 
   void printProgress(bool final_line) {
@@ -179,15 +223,14 @@ class Reconstruction {
   const vicc_tracking::RigBag& bag_;
   vicc_tracking::TrackerConfig config_;
   std::unique_ptr<vicc_tracking::Tracker> tracker_;
-  std::unique_ptr<vicc_tracking::DepthPreprocessor> cloud_preprocessor_;
-  std::unique_ptr<vicc_fusion::CloudAccumulator> cloud_;
+  std::unique_ptr<vicc_fusion::FrameToModel> model_;
+  std::vector<double> fusion_ms_, model_prediction_ms_, pipeline_ms_;
   vicc_tracking::TrackingStatistics statistics_;
   std::vector<vicc_tracking::TimedPose> trajectory_;
   vicc_fusion::ReconstructRun run_;
   sensor_msgs::CameraInfoConstPtr last_info_;
   size_t depth_index_ = 0;
   size_t next_imu_ = 0;
-  int tracked_for_cloud_ = 0;
   int warnings_ = 0;
   Clock::time_point start_ = Clock::now();
   Clock::time_point last_progress_ = Clock::now();

@@ -107,8 +107,8 @@ std::string validate(const DiffusionCurveImage& image) {
     for (const Point2& p : curve.control_points) {
       if (!finite(p)) return where.str() + "non-finite control point";
     }
-    for (const auto& [points, side] : {std::pair{&curve.left_colors, "left"},
-                                       std::pair{&curve.right_colors, "right"}}) {
+    for (const auto& [points, side] :
+         {std::pair{&curve.left_colors, "left"}, std::pair{&curve.right_colors, "right"}}) {
       const std::string problem = checkColors(*points, segments, side);
       if (!problem.empty()) return where.str() + problem;
     }

@@ -42,19 +42,20 @@ struct StageTimings {
 };
 
 struct FrameReport {
-  bool accepted = true;        ///< false: frame dropped (see message), nothing changed
-  std::string message;         ///< why a frame was dropped or tracking was lost
+  bool accepted = true;  ///< false: frame dropped (see message), nothing changed
+  std::string message;   ///< why a frame was dropped or tracking was lost
   double stamp = 0.0;
-  int frame_index = -1;        ///< index among tracked frames (-1 while initializing)
+  int frame_index = -1;  ///< index among tracked frames (-1 while initializing)
   TrackingState state = TrackingState::kInitializing;
   Eigen::Isometry3d camera_pose = Eigen::Isometry3d::Identity();    ///< T_map_camera
   Eigen::Isometry3d initial_guess = Eigen::Isometry3d::Identity();  ///< T_map_camera
   IcpResult icp;
-  double init_error_position = 0.0;      ///< |guess - result|, m
+  double init_error_position = 0.0;  ///< |guess - result|, m
   double init_error_rotation_deg = 0.0;
   double identity_error_position = 0.0;  ///< |previous pose - result|: what identity init misses
   double identity_error_rotation_deg = 0.0;
   StageTimings timings;
+  bool aligned_to_model = false;  ///< ICP reference was a model prediction (frame-to-model)
   bool tracked() const { return accepted && state != TrackingState::kInitializing; }
 };
 
@@ -73,6 +74,15 @@ class Tracker {
   /// Processes one depth frame. Throws std::invalid_argument for an image that does not fit
   /// the camera (wrong type or size); the tracker state is unchanged then.
   FrameReport addDepth(double stamp, const cv::Mat& raw_depth);
+
+  /// The pyramid of the frame addDepth() just tracked, for fusion. Valid until the next
+  /// addDepth() or useModelPrediction(); empty before tracking starts.
+  const DepthPyramid& currentFrame() const { return reference_; }
+
+  /// Frame-to-model tracking: the next frame is aligned to `prediction` (the model rendered
+  /// at the last camera pose, laid out like currentFrame()) instead of to the last frame.
+  /// Returns false, keeping frame-to-frame, when not tracking or the layout does not match.
+  bool useModelPrediction(DepthPyramid&& prediction);
 
   void reset();
   TrackingState state() const { return state_; }
@@ -100,6 +110,7 @@ class Tracker {
   std::optional<double> last_stamp_;
   Eigen::Isometry3d last_camera_pose_ = Eigen::Isometry3d::Identity();
   DepthPyramid reference_;
+  bool reference_is_model_ = false;
 };
 
 /// Translation (m) and rotation (deg) between two poses.

@@ -15,6 +15,8 @@ struct TrajectoryError {
   double max_rotation_deg = 0.0;
   double final_position = 0.0;  ///< m, at the last matched pose
   double final_rotation_deg = 0.0;
+  /// T_truth_estimate: maps the estimate's map frame into the truth's (first matched pose).
+  Eigen::Isometry3d alignment = Eigen::Isometry3d::Identity();
 };
 
 /// Poses are matched by stamp (within max_stamp_difference seconds).

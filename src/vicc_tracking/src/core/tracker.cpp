@@ -8,7 +8,8 @@ namespace vicc_tracking {
 namespace {
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
 }
 
 }  // namespace
@@ -72,11 +73,27 @@ Tracker::Tracker(const TrackerConfig& config, const Eigen::Isometry3d& imu_to_ca
 
 void Tracker::setCamera(const CameraModel& camera) { preprocessor_.setCamera(camera); }
 
+bool Tracker::useModelPrediction(DepthPyramid&& prediction) {
+  if (state_ != TrackingState::kOk || prediction.size() != reference_.size()) return false;
+  for (size_t level = 0; level < prediction.size(); ++level) {
+    const PinholeIntrinsics& a = prediction[level].intrinsics;
+    const PinholeIntrinsics& b = reference_[level].intrinsics;
+    if (a.width != b.width || a.height != b.height ||
+        prediction[level].vertices.size() != reference_[level].vertices.size()) {
+      return false;
+    }
+  }
+  reference_ = std::move(prediction);
+  reference_is_model_ = true;
+  return true;
+}
+
 void Tracker::reset() {
   state_ = TrackingState::kInitializing;
   frame_index_ = -1;
   last_stamp_.reset();
   reference_.clear();
+  reference_is_model_ = false;
   strategy_.reset();
   still_phase_.reset();
   synchronizer_.reset();
@@ -144,6 +161,7 @@ void Tracker::startTracking(FrameReport& report, DepthPyramid&& pyramid) {
   frame_index_ = 0;
   last_camera_pose_ = map_to_imu * imu_to_camera_;
   reference_ = std::move(pyramid);
+  reference_is_model_ = false;
   report.frame_index = 0;
   report.state = state_;
   report.camera_pose = last_camera_pose_;
@@ -166,7 +184,8 @@ FrameReport Tracker::addDepth(double stamp, const cv::Mat& raw_depth) {
       reset();  // a looping bag or restarted driver: start over with a new still phase
     } else if (stamp <= *last_stamp_) {
       report.accepted = false;
-      report.message = stamp == *last_stamp_ ? "duplicated depth stamp" : "out-of-order depth stamp";
+      report.message =
+          stamp == *last_stamp_ ? "duplicated depth stamp" : "out-of-order depth stamp";
       return report;
     }
   }
@@ -191,13 +210,15 @@ FrameReport Tracker::addDepth(double stamp, const cv::Mat& raw_depth) {
   const auto prediction_start = std::chrono::steady_clock::now();
   const double interval = stamp - *last_stamp_;
   const std::vector<ImuStep> steps = synchronizer_.takeInterval(interval);
-  const Eigen::Isometry3d guess = orthonormalized(strategy_->predict(stamp, steps) * imu_to_camera_);
+  const Eigen::Isometry3d guess =
+      orthonormalized(strategy_->predict(stamp, steps) * imu_to_camera_);
   report.timings.prediction_ms = millisecondsSince(prediction_start);
 
   const auto icp_start = std::chrono::steady_clock::now();
   const Eigen::Isometry3d reference_pose = last_camera_pose_;
   report.icp = icp_.align(pyramid, reference_, reference_pose.inverse() * guess);
   report.timings.icp_ms = millisecondsSince(icp_start);
+  report.aligned_to_model = reference_is_model_;
 
   report.initial_guess = guess;
   if (report.icp.ok) {
@@ -220,6 +241,7 @@ FrameReport Tracker::addDepth(double stamp, const cv::Mat& raw_depth) {
   last_camera_pose_ = report.camera_pose;
   last_stamp_ = stamp;
   reference_ = std::move(pyramid);
+  reference_is_model_ = false;
   report.state = state_;
   report.frame_index = ++frame_index_;
   report.timings.total_ms = millisecondsSince(start);

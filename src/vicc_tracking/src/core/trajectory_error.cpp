@@ -43,6 +43,7 @@ TrajectoryError compareTrajectories(const std::vector<TimedPose>& estimate,
     error.final_position = difference.translation;
     error.final_rotation_deg = difference.rotation_deg;
   }
+  if (alignment) error.alignment = *alignment;
   if (error.matched > 0) error.rmse_position = std::sqrt(squared_sum / error.matched);
   return error;
 }

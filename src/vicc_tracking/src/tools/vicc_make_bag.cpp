@@ -1,4 +1,4 @@
-// vicc_make_bag SCENARIO --out FILE.bag [--gt FILE.tum] [--start-time SEC]
+// vicc_make_bag SCENARIO --out FILE.bag [--gt FILE.tum] [--surface FILE.ply] [--start-time SEC]
 // Writes the recording the simulated rig would produce (same code as the publisher nodes),
 // as fast as the renderer allows.
 #include <algorithm>
@@ -12,18 +12,22 @@
 #include <boost/make_shared.hpp>
 
 #include "vicc_tracking/ros/rig_messages.hpp"
+#include "vicc_tracking/sim/visible_surface.hpp"
 #include "vicc_tracking/tum_trajectory.hpp"
 
 namespace {
 
 void printUsage(std::ostream& out) {
-  out << "usage: vicc_make_bag SCENARIO --out FILE.bag [--gt FILE.tum] [--start-time SEC]\n"
+  out << "usage: vicc_make_bag SCENARIO --out FILE.bag [--gt FILE.tum] [--surface FILE.ply]\n"
+         "                     [--start-time SEC]\n"
          "  SCENARIO: a name (";
   const auto names = vicc_tracking::sim::availableScenarios();
   for (size_t i = 0; i < names.size(); ++i) out << (i ? ", " : "") << names[i];
   out << ") or a scenario YAML file\n"
          "  --gt FILE.tum     ground truth camera poses (optical frame in map) at the depth "
          "stamps\n"
+         "  --surface FILE.ply the true surface the recording saw (2 mm samples with normals,\n"
+         "                    map frame): the reference for reconstruction accuracy\n"
          "  --start-time SEC  stamp of the first message (default 1700000000)\n";
 }
 
@@ -31,6 +35,7 @@ struct Options {
   std::string scenario;
   std::string bag_path;
   std::string gt_path;
+  std::string surface_path;
   double start_time = 1700000000.0;
 };
 
@@ -46,6 +51,8 @@ Options parseOptions(int argc, char** argv) {
       options.bag_path = value();
     } else if (arg == "--gt") {
       options.gt_path = value();
+    } else if (arg == "--surface") {
+      options.surface_path = value();
     } else if (arg == "--start-time") {
       const std::string text = value();
       char* end = nullptr;
@@ -136,6 +143,16 @@ int main(int argc, char** argv) {
     bag.close();
     if (!options.gt_path.empty()) {
       vicc_tracking::writeTumTrajectory(options.gt_path, ground_truth_poses);
+    }
+    if (!options.surface_path.empty()) {
+      std::fprintf(stderr, "\n");
+      const auto surface = vicc_tracking::sim::visibleSurface(
+          rig, vicc_tracking::sim::VisibleSurfaceConfig{}, [](size_t done, size_t total) {
+            std::fprintf(stderr, "\rvicc_make_bag: visible surface, frame %zu/%zu", done, total);
+          });
+      vicc_tracking::sim::writeSurfacePly(options.surface_path, surface);
+      std::fprintf(stderr, "\nvicc_make_bag: wrote %s (%zu true surface points)",
+                   options.surface_path.c_str(), surface.size());
     }
     std::fprintf(stderr, "\nvicc_make_bag: wrote %s (%.1f s, %zu depth frames, %zu IMU readings)\n",
                  options.bag_path.c_str(), rig.duration(), depth_times.size(), imu_times.size());

@@ -37,7 +37,7 @@ struct BlurPoint {
 /// One diffusion curve: geometry plus colour constraints on each side. A side with
 /// `emits == false` is a diffusion barrier there: it blocks diffusion but adds no colour.
 struct DiffusionCurve {
-  std::vector<Point2> control_points;  ///< 3K+1 points
+  std::vector<Point2> control_points;    ///< 3K+1 points
   std::vector<ColorPoint> left_colors;   ///< sorted by position
   std::vector<ColorPoint> right_colors;  ///< sorted by position
   std::vector<BlurPoint> blur_points;    ///< sorted by position

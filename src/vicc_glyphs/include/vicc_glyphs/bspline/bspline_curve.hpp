@@ -1,0 +1,78 @@
+#pragma once
+// A planar B-spline curve s(u) = sum_i d_i N_i^p(u) (thesis 2.5.2, Eq. 2.34): degree p, de Boor
+// points d_0 .. d_n and a non-decreasing knot vector t_0 .. t_{n+p+1}. The curve is defined on
+// the domain [t_p, t_{n+1}]. Coordinates follow diffusion_curve.hpp (pixels, y down).
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "vicc_glyphs/dci/diffusion_curve.hpp"
+
+namespace vicc_glyphs {
+namespace bspline {
+
+/// The basis functions that do not vanish at a parameter: N_{first}, ..., N_{first+p} (or their
+/// derivatives of a given order), as used for fitting matrices.
+struct BasisRow {
+  int first_index = 0;
+  Eigen::VectorXd values;
+};
+
+class BSplineCurve {
+ public:
+  /// Validates and stores the curve. Throws std::invalid_argument with a reason when the degree
+  /// is below 1, there are fewer than degree + 1 de Boor points, the knot count is not
+  /// points + degree + 1, knots decrease, a knot or point is not finite, the domain is empty,
+  /// an interior knot has a multiplicity above the degree (the curve would break apart) or an
+  /// end knot one above degree + 1.
+  BSplineCurve(int degree, std::vector<double> knots, std::vector<Point2> control_points);
+
+  /// A clamped (open) knot vector over [begin, end] with uniformly spaced interior knots, for
+  /// `control_count` de Boor points: the curve starts at the first and ends at the last point.
+  static std::vector<double> clampedUniformKnots(int degree, int control_count, double begin,
+                                                 double end);
+
+  int degree() const { return degree_; }
+  const std::vector<double>& knots() const { return knots_; }
+  const std::vector<Point2>& controlPoints() const { return control_points_; }
+  int controlPointCount() const { return static_cast<int>(control_points_.size()); }
+
+  /// Replaces the de Boor points keeping the knots; same validation as the constructor.
+  void setControlPoints(std::vector<Point2> control_points);
+
+  double domainBegin() const { return knots_[degree_]; }
+  double domainEnd() const { return knots_[control_points_.size()]; }
+
+  /// Index l of the knot span [t_l, t_{l+1}) with non-zero length that contains u, limited to
+  /// the domain (the end of the domain belongs to the last span).
+  int findSpan(double u) const;
+  /// How often the knot value u occurs in the knot vector (exact comparison).
+  int multiplicity(double u) const;
+  /// The distinct knot values within the domain, including its ends: the parameters where the
+  /// polynomial pieces join.
+  std::vector<double> breakpoints() const;
+
+  /// Curve point by the de Boor algorithm (Eq. 2.40); u is clamped to the domain.
+  Point2 pointAt(double u) const;
+  /// Derivative d^order s / du^order (order >= 0) from the derivative de Boor points of
+  /// Eq. 2.42; zero above the degree. u is clamped to the domain.
+  Point2 derivativeAt(double u, int order = 1) const;
+  /// The p + 1 basis functions (or their derivatives of `order`) that may be non-zero at u.
+  BasisRow basisAt(double u, int order = 0) const;
+
+  /// Samples `count` >= 2 points at parameters equally spaced over the domain.
+  std::vector<Point2> sample(int count) const;
+  /// True when the first and last curve points coincide within `tolerance`.
+  bool isClosed(double tolerance = 1e-9) const;
+
+ private:
+  void validate() const;
+  double clampToDomain(double u) const;
+
+  int degree_;
+  std::vector<double> knots_;
+  std::vector<Point2> control_points_;
+};
+
+}  // namespace bspline
+}  // namespace vicc_glyphs

@@ -1,0 +1,34 @@
+#pragma once
+// B-spline interpolation and least-squares approximation (thesis 2.5.3, Eqs. 2.43 and 2.47).
+
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "vicc_glyphs/bspline/bspline_curve.hpp"
+
+namespace vicc_glyphs {
+namespace bspline {
+
+/// Collocation matrix N of Eq. 2.43: entry (i, j) is N_j (or its derivative of `order`) at
+/// parameters[i], for the basis given by the degree and knots of `basis` (its de Boor points are
+/// ignored). Throws std::invalid_argument for a parameter outside the domain or not finite.
+Eigen::SparseMatrix<double> collocationMatrix(const BSplineCurve& basis,
+                                              const std::vector<double>& parameters, int order = 0);
+
+/// Chord-length parameters for `points` (the discrete form of the arc-length choice, thesis
+/// 2.5.3) spread over [begin, end]; equal spacing where all points coincide.
+std::vector<double> chordLengthParameters(const std::vector<Point2>& points, double begin,
+                                          double end);
+
+/// Least-squares fit (Eq. 2.47): the de Boor points D minimising sum |s(u_i) - p_i|^2 for the
+/// given degree and knot vector, solved by sparse QR (same minimiser as N^T N D = N^T P, better
+/// conditioned). Interpolates when there are as many points as de Boor points. Throws
+/// std::invalid_argument for mismatched sizes, non-finite data, parameters outside the domain
+/// or when the points do not determine all de Boor points (a knot span without enough
+/// parameters, Schoenberg-Whitney).
+BSplineCurve leastSquaresFit(int degree, std::vector<double> knots,
+                             const std::vector<Point2>& points,
+                             const std::vector<double>& parameters);
+
+}  // namespace bspline
+}  // namespace vicc_glyphs

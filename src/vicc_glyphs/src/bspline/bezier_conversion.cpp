@@ -1,0 +1,117 @@
+#include "vicc_glyphs/bspline/bezier_conversion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+#include "vicc_glyphs/bspline/knot_insertion.hpp"
+
+namespace vicc_glyphs {
+namespace bspline {
+namespace {
+
+constexpr int kCubic = 3;
+constexpr double kPi = 3.14159265358979323846;
+
+double angleBetweenDegrees(const Point2& a, const Point2& b) {
+  const double cross = a.x() * b.y() - a.y() * b.x();
+  return std::atan2(std::abs(cross), a.dot(b)) * 180.0 / kPi;
+}
+
+// Tangents shorter than this fraction of the chain's extent count as retracted handles: their
+// direction is meaningless and a ratio with them would blow up the parameter intervals.
+double degenerateLength(const std::vector<Point2>& points) {
+  Point2 low = points.front();
+  Point2 high = points.front();
+  for (const Point2& p : points) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  return 1e-9 * std::max((high - low).norm(), 1e-300);
+}
+
+}  // namespace
+
+SplineFromBezier bezierChainToBSpline(const std::vector<Point2>& control_points,
+                                      const BezierConversionOptions& options) {
+  const int count = static_cast<int>(control_points.size());
+  if (count < 4 || (count - 1) % 3 != 0) {
+    throw std::invalid_argument("bezierChainToBSpline: need 3K+1 control points (K >= 1), got " +
+                                std::to_string(count));
+  }
+  for (const Point2& p : control_points) {
+    if (!p.allFinite()) throw std::invalid_argument("bezierChainToBSpline: point not finite");
+  }
+  if (!(options.c1_angle_degrees >= 0.0 && options.c1_angle_degrees < 180.0)) {
+    throw std::invalid_argument("bezierChainToBSpline: C1 angle must be in [0, 180) degrees");
+  }
+  const std::vector<Point2>& p = control_points;
+  const int segments = (count - 1) / 3;
+  const double tiny = degenerateLength(p);
+
+  std::vector<double> intervals(segments, 1.0);
+  std::vector<bool> smooth(segments - 1, false);
+  for (int k = 1; k < segments; ++k) {
+    const Point2 incoming = p[3 * k] - p[3 * k - 1];
+    const Point2 outgoing = p[3 * k + 1] - p[3 * k];
+    const bool tangents = incoming.norm() > tiny && outgoing.norm() > tiny;
+    smooth[k - 1] = tangents && angleBetweenDegrees(incoming, outgoing) < options.c1_angle_degrees;
+    double ratio = 1.0;
+    if (smooth[k - 1]) {
+      ratio = outgoing.norm() / incoming.norm();
+    } else {
+      const double before = (p[3 * k] - p[3 * k - 3]).norm();
+      const double after = (p[3 * k + 3] - p[3 * k]).norm();
+      if (before > tiny && after > tiny) ratio = after / before;
+    }
+    intervals[k] = intervals[k - 1] * ratio;
+  }
+  const double scale = segments / std::accumulate(intervals.begin(), intervals.end(), 0.0);
+  std::vector<double> breakpoints(segments + 1, 0.0);
+  for (int k = 0; k < segments; ++k) breakpoints[k + 1] = breakpoints[k] + scale * intervals[k];
+  breakpoints.back() = segments;  // exact end despite rounding
+
+  std::vector<double> knots(kCubic + 1, 0.0);
+  std::vector<Point2> points = {p[0]};
+  for (int k = 0; k < segments; ++k) {
+    points.push_back(p[3 * k + 1]);
+    points.push_back(p[3 * k + 2]);
+    const bool last = k == segments - 1;
+    const bool drop_join = !last && smooth[k];
+    if (!drop_join) points.push_back(p[3 * k + 3]);
+    const int multiplicity = last ? kCubic + 1 : (drop_join ? 2 : kCubic);
+    knots.insert(knots.end(), multiplicity, breakpoints[k + 1]);
+  }
+  return SplineFromBezier{BSplineCurve(kCubic, std::move(knots), std::move(points)),
+                          ChainParameterMap(std::move(breakpoints)), std::move(smooth)};
+}
+
+BezierFromSpline bsplineToBezierChain(const BSplineCurve& curve) {
+  if (curve.degree() != kCubic) {
+    throw std::invalid_argument("bsplineToBezierChain: only cubic B-splines, got degree " +
+                                std::to_string(curve.degree()));
+  }
+  const BSplineCurve bezier = raiseMultiplicities(curve, kCubic);
+  const std::vector<double>& t = bezier.knots();
+  // With a knot of multiplicity >= p at each domain end, the curve's end points are the de Boor
+  // points just inside them; points beyond belong to knot spans outside the domain.
+  const int last_begin_knot =
+      static_cast<int>(std::upper_bound(t.begin(), t.end(), bezier.domainBegin()) - t.begin()) - 1;
+  const int first_end_knot =
+      static_cast<int>(std::lower_bound(t.begin(), t.end(), bezier.domainEnd()) - t.begin());
+  const int first = last_begin_knot - kCubic;
+  const int last = first_end_knot - 1;
+  std::vector<double> breaks = bezier.breakpoints();
+  const int segments = static_cast<int>(breaks.size()) - 1;
+  if (last - first + 1 != 3 * segments + 1) {
+    throw std::logic_error("bsplineToBezierChain: unexpected de Boor point count after insertion");
+  }
+  const std::vector<Point2>& d = bezier.controlPoints();
+  return BezierFromSpline{std::vector<Point2>(d.begin() + first, d.begin() + last + 1),
+                          ChainParameterMap(std::move(breaks))};
+}
+
+}  // namespace bspline
+}  // namespace vicc_glyphs

@@ -1,0 +1,183 @@
+#include "vicc_glyphs/bspline/bspline_curve.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace vicc_glyphs {
+namespace bspline {
+namespace {
+
+[[noreturn]] void fail(const std::string& reason) {
+  throw std::invalid_argument("BSplineCurve: " + reason);
+}
+
+// Derivative of `order` on the knot span `span` from the p + 1 de Boor values that act there
+// (local[j] belongs to index span - p + j). First the derivative de Boor points of Eq. 2.42 are
+// formed `order` times, then the de Boor recursion of Eq. 2.40 runs with the lowered degree.
+// Templated so that the same code yields curve points (Point2) and basis functions (a vector of
+// unit coefficients).
+template <typename Value>
+Value evaluateOnSpan(const std::vector<double>& t, int p, int span, std::vector<Value> local,
+                     double u, int order) {
+  if (order > p) return Value(local[0] * 0.0);
+  for (int r = 1; r <= order; ++r) {
+    for (int j = p; j >= r; --j) {
+      const int i = span - p + j;
+      const double scale = static_cast<double>(p - r + 1) / (t[i + p - r + 1] - t[i]);
+      local[j] = scale * (local[j] - local[j - 1]);
+    }
+  }
+  const int q = p - order;
+  for (int k = 1; k <= q; ++k) {
+    for (int j = p; j >= order + k; --j) {
+      const int i = span - p + j;
+      const double alpha = (u - t[i]) / (t[i + q + 1 - k] - t[i]);
+      local[j] = (1.0 - alpha) * local[j - 1] + alpha * local[j];
+    }
+  }
+  return local[p];
+}
+
+}  // namespace
+
+BSplineCurve::BSplineCurve(int degree, std::vector<double> knots,
+                           std::vector<Point2> control_points)
+    : degree_(degree), knots_(std::move(knots)), control_points_(std::move(control_points)) {
+  validate();
+}
+
+std::vector<double> BSplineCurve::clampedUniformKnots(int degree, int control_count, double begin,
+                                                      double end) {
+  if (degree < 1 || control_count < degree + 1 || !(begin < end)) {
+    fail("clampedUniformKnots needs degree >= 1, at least degree + 1 points and begin < end");
+  }
+  std::vector<double> knots(control_count + degree + 1);
+  const int interior = control_count - degree - 1;
+  for (int i = 0; i <= degree; ++i) {
+    knots[i] = begin;
+    knots[knots.size() - 1 - i] = end;
+  }
+  for (int i = 1; i <= interior; ++i) {
+    knots[degree + i] = begin + (end - begin) * i / (interior + 1);
+  }
+  return knots;
+}
+
+void BSplineCurve::setControlPoints(std::vector<Point2> control_points) {
+  std::swap(control_points_, control_points);
+  try {
+    validate();
+  } catch (...) {
+    std::swap(control_points_, control_points);  // keep the curve valid on failure
+    throw;
+  }
+}
+
+void BSplineCurve::validate() const {
+  const int p = degree_;
+  const int n_points = static_cast<int>(control_points_.size());
+  if (p < 1) fail("degree must be at least 1, got " + std::to_string(p));
+  if (n_points < p + 1) {
+    fail("degree " + std::to_string(p) + " needs at least " + std::to_string(p + 1) +
+         " de Boor points, got " + std::to_string(n_points));
+  }
+  if (static_cast<int>(knots_.size()) != n_points + p + 1) {
+    fail("expected " + std::to_string(n_points + p + 1) + " knots (points + degree + 1), got " +
+         std::to_string(knots_.size()));
+  }
+  for (std::size_t i = 0; i < control_points_.size(); ++i) {
+    if (!control_points_[i].allFinite()) fail("de Boor point " + std::to_string(i) + " not finite");
+  }
+  for (std::size_t i = 0; i < knots_.size(); ++i) {
+    if (!std::isfinite(knots_[i])) fail("knot " + std::to_string(i) + " is not finite");
+    if (i > 0 && knots_[i] < knots_[i - 1]) fail("knots decrease at index " + std::to_string(i));
+  }
+  if (!(domainBegin() < domainEnd())) fail("empty domain [t_p, t_{n+1}]");
+  for (std::size_t i = 0; i < knots_.size();) {
+    std::size_t j = i;
+    while (j < knots_.size() && knots_[j] == knots_[i]) ++j;
+    const int count = static_cast<int>(j - i);
+    const bool interior = knots_[i] > domainBegin() && knots_[i] < domainEnd();
+    if (count > (interior ? p : p + 1)) {
+      std::ostringstream reason;
+      reason << "knot " << knots_[i] << " occurs " << count << " times; at most "
+             << (interior ? p : p + 1) << " allowed " << (interior ? "inside" : "at the ends of")
+             << " the domain";
+      fail(reason.str());
+    }
+    i = j;
+  }
+}
+
+double BSplineCurve::clampToDomain(double u) const {
+  if (!std::isfinite(u)) fail("curve parameter is not finite");
+  return std::clamp(u, domainBegin(), domainEnd());
+}
+
+int BSplineCurve::findSpan(double u) const {
+  const double v = clampToDomain(u);
+  const int n = controlPointCount() - 1;
+  if (v >= domainEnd()) {
+    int l = n;
+    while (knots_[l] == knots_[l + 1]) --l;  // terminates: the domain is not empty
+    return l;
+  }
+  const auto upper = std::upper_bound(knots_.begin(), knots_.begin() + n + 2, v);
+  return static_cast<int>(upper - knots_.begin()) - 1;
+}
+
+int BSplineCurve::multiplicity(double u) const {
+  return static_cast<int>(std::count(knots_.begin(), knots_.end(), u));
+}
+
+std::vector<double> BSplineCurve::breakpoints() const {
+  std::vector<double> values;
+  for (std::size_t i = degree_; i < control_points_.size() + 1; ++i) {
+    if (values.empty() || knots_[i] != values.back()) values.push_back(knots_[i]);
+  }
+  return values;
+}
+
+Point2 BSplineCurve::pointAt(double u) const { return derivativeAt(u, 0); }
+
+Point2 BSplineCurve::derivativeAt(double u, int order) const {
+  if (order < 0) fail("derivative order must not be negative");
+  const double v = clampToDomain(u);
+  const int span = findSpan(v);
+  std::vector<Point2> local(control_points_.begin() + (span - degree_),
+                            control_points_.begin() + (span + 1));
+  return evaluateOnSpan(knots_, degree_, span, std::move(local), v, order);
+}
+
+BasisRow BSplineCurve::basisAt(double u, int order) const {
+  if (order < 0) fail("derivative order must not be negative");
+  const double v = clampToDomain(u);
+  const int span = findSpan(v);
+  // Evaluating with unit coefficient vectors yields all p + 1 basis values at once.
+  std::vector<Eigen::VectorXd> unit(degree_ + 1, Eigen::VectorXd::Zero(degree_ + 1));
+  for (int j = 0; j <= degree_; ++j) unit[j][j] = 1.0;
+  BasisRow row;
+  row.first_index = span - degree_;
+  row.values = evaluateOnSpan(knots_, degree_, span, std::move(unit), v, order);
+  return row;
+}
+
+std::vector<Point2> BSplineCurve::sample(int count) const {
+  if (count < 2) fail("sampling needs at least 2 points");
+  std::vector<Point2> points(count);
+  for (int i = 0; i < count; ++i) {
+    const double w = static_cast<double>(i) / (count - 1);
+    points[i] = pointAt((1.0 - w) * domainBegin() + w * domainEnd());
+  }
+  return points;
+}
+
+bool BSplineCurve::isClosed(double tolerance) const {
+  return (pointAt(domainBegin()) - pointAt(domainEnd())).norm() <= tolerance;
+}
+
+}  // namespace bspline
+}  // namespace vicc_glyphs
