@@ -12,6 +12,7 @@ namespace vicc_fusion {
 
 struct FrameToModelConfig {
   SurfelFusionConfig fusion;
+  /// Its stable_confidence is taken from `fusion`: the tracker aligns to the stable model.
   ModelPredictionConfig prediction;
   bool track_against_model = true;  ///< false: fuse only, track frame-to-frame
   /// The prediction replaces the last frame only if it has at least this share of the

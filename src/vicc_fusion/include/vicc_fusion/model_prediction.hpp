@@ -10,7 +10,10 @@
 namespace vicc_fusion {
 
 struct ModelPredictionConfig {
-  double stable_confidence = 4.0;    ///< only surfels at or above this confidence are drawn
+  double stable_confidence = 3.0;    ///< only surfels at or above this confidence are drawn
+  /// Surfel radii just cover a regular grid (half the pixel diagonal), so rounding leaves
+  /// pinholes; drawing the discs a little larger closes them (the blend averages overlaps).
+  double splat_radius_scale = 1.1;
   double blend_depth = 0.005;        ///< m; discs this close to the front one are averaged
   double max_splat_radius_px = 6.0;  ///< caps the footprint of very close surfels
   double min_depth = 0.1;            ///< m; nearer surfels are not drawn

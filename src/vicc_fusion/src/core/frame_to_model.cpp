@@ -23,6 +23,7 @@ void FrameToModelConfig::validate() const {
 
 FrameToModel::FrameToModel(const FrameToModelConfig& config)
     : config_(config), fusion_(config.fusion) {
+  config_.prediction.stable_confidence = config_.fusion.stable_confidence;
   config_.validate();
 }
 

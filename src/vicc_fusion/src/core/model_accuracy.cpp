@@ -19,9 +19,9 @@ pcl::PointCloud<pcl::PointNormal> loadTruthSurface(const std::string& path) {
 
 ModelAccuracy evaluateModel(const SurfelVector& surfels,
                             const pcl::PointCloud<pcl::PointNormal>& truth,
-                            const Eigen::Isometry3d& truth_from_model, double completeness_radius) {
+                            const Eigen::Isometry3d& truth_from_model, double completeness_radius,
+                            double region_margin) {
   ModelAccuracy accuracy;
-  accuracy.surfels = surfels.size();
   accuracy.truth_points = truth.size();
   accuracy.completeness_radius = completeness_radius;
   if (surfels.empty() || truth.empty()) return accuracy;
@@ -48,12 +48,17 @@ ModelAccuracy evaluateModel(const SurfelVector& surfels,
     if (truth_tree.nearestKSearch(query, 1, index, squared) < 1) continue;
     const pcl::PointNormal& nearest = truth[index[0]];
     const Eigen::Vector3f offset = point.getVector3fMap() - nearest.getVector3fMap();
-    // Point-to-plane near the sampled surface; far away (no true surface there) the
-    // Euclidean distance is the honest figure.
     const double euclidean = offset.norm();
+    if (euclidean > region_margin) {
+      ++accuracy.surfels_outside;
+      continue;
+    }
+    // Point-to-plane near the sampled surface; between samples of a curved surface or at an
+    // edge the Euclidean distance is the honest figure.
     const double to_plane = std::abs(offset.dot(nearest.getNormalVector3fMap()));
-    distances.push_back(euclidean < 0.01 ? to_plane : euclidean);
+    distances.push_back(euclidean < 0.005 ? to_plane : euclidean);
   }
+  accuracy.surfels = distances.size();
   if (distances.empty()) return accuracy;
   double sum = 0.0;
   for (const double d : distances) sum += d;

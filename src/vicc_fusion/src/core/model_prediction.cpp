@@ -11,6 +11,9 @@ void ModelPredictionConfig::validate() const {
   if (!(stable_confidence > 0.0)) {
     throw std::invalid_argument("model prediction: stable_confidence must be > 0");
   }
+  if (!(splat_radius_scale >= 1.0)) {
+    throw std::invalid_argument("model prediction: splat_radius_scale must be >= 1");
+  }
   if (!(blend_depth >= 0.0))
     throw std::invalid_argument("model prediction: blend_depth must be >= 0");
   if (!(max_splat_radius_px >= 0.5)) {
@@ -22,23 +25,24 @@ void ModelPredictionConfig::validate() const {
 namespace {
 
 /// The discs covering one pixel: the front one and those within the blend depth behind it.
+/// All lie on the pixel's ray, so their (inverse) depth is all it takes to place the vertex;
+/// inverse depth is affine across a disc, which spares a division per pixel.
 struct SplatPixel {
-  float front = std::numeric_limits<float>::infinity();
+  float front = 0.f;  ///< largest inverse depth so far (nearest surface); 0 = none
   float weight = 0.f;
-  Eigen::Vector3f position_sum = Eigen::Vector3f::Zero();
+  float inv_depth_sum = 0.f;
   Eigen::Vector3f normal_sum = Eigen::Vector3f::Zero();
 
-  void add(float depth, float w, const Eigen::Vector3f& point, const Eigen::Vector3f& normal,
-           float blend) {
-    if (depth < front - blend) {  // a new front surface hides what was there
-      front = depth;
+  void add(float inv_depth, float w, const Eigen::Vector3f& normal, float blend) {
+    if (inv_depth > front + blend) {  // a new front surface hides what was there
+      front = inv_depth;
       weight = w;
-      position_sum = w * point;
+      inv_depth_sum = w * inv_depth;
       normal_sum = w * normal;
-    } else if (depth <= front + blend) {
-      front = std::min(front, depth);
+    } else if (inv_depth >= front - blend) {
+      front = std::max(front, inv_depth);
       weight += w;
-      position_sum += w * point;
+      inv_depth_sum += w * inv_depth;
       normal_sum += w * normal;
     }
   }
@@ -60,6 +64,7 @@ vicc_tracking::DepthLevel renderModel(const SurfelVector& surfels,
   const float inv_fx = 1.f / intrinsics.fx, inv_fy = 1.f / intrinsics.fy;
   const float stable = static_cast<float>(config.stable_confidence);
   const float blend = static_cast<float>(config.blend_depth);
+  const float radius_scale = static_cast<float>(config.splat_radius_scale);
   const float max_splat = static_cast<float>(config.max_splat_radius_px);
   const float min_depth = static_cast<float>(config.min_depth);
 
@@ -73,37 +78,65 @@ vicc_tracking::DepthLevel renderModel(const SurfelVector& surfels,
     const float inv_z = 1.f / center.z();
     const float u0 = intrinsics.fx * center.x() * inv_z + intrinsics.cx;
     const float v0 = intrinsics.fy * center.y() * inv_z + intrinsics.cy;
-    // Screen footprint of the disc: the ellipse spanned by two orthogonal radius vectors
-    // through the projection's Jacobian at the centre. A disc seen at a grazing angle is a
-    // thin ellipse, so a circle of its full radius would test many pixels for nothing.
-    const Eigen::Vector3f axis_a = normal.unitOrthogonal();
+    // Most of the model lies outside the view: leave before the footprint's square roots.
+    if (u0 < -max_splat || v0 < -max_splat || u0 > width + max_splat || v0 > height + max_splat) {
+      continue;
+    }
+    // Screen footprint of the disc, first order at its centre: the ellipse spanned by two
+    // orthogonal radius vectors through the projection's Jacobian J. A disc seen at a grazing
+    // angle is a thin ellipse, so its bounding box stays small.
+    const float radius = surfel.radius * radius_scale;
+    Eigen::Vector3f axis_a;
+    if (std::abs(normal.x()) < 0.9f) {  // normal x (1, 0, 0), normalised
+      const float inv = 1.f / std::sqrt(normal.y() * normal.y() + normal.z() * normal.z());
+      axis_a = Eigen::Vector3f(0.f, normal.z() * inv, -normal.y() * inv);
+    } else {  // normal x (0, 1, 0), normalised
+      const float inv = 1.f / std::sqrt(normal.x() * normal.x() + normal.z() * normal.z());
+      axis_a = Eigen::Vector3f(-normal.z() * inv, 0.f, normal.x() * inv);
+    }
     const Eigen::Vector3f axis_b(normal.y() * axis_a.z() - normal.z() * axis_a.y(),
                                  normal.z() * axis_a.x() - normal.x() * axis_a.z(),
                                  normal.x() * axis_a.y() - normal.y() * axis_a.x());
-    const float scale = surfel.radius * inv_z;
-    const float ax = intrinsics.fx * scale * (axis_a.x() - center.x() * inv_z * axis_a.z());
-    const float bx = intrinsics.fx * scale * (axis_b.x() - center.x() * inv_z * axis_b.z());
-    const float ay = intrinsics.fy * scale * (axis_a.y() - center.y() * inv_z * axis_a.z());
-    const float by = intrinsics.fy * scale * (axis_b.y() - center.y() * inv_z * axis_b.z());
+    const float ju_x = radius * intrinsics.fx * inv_z;
+    const float ju_z = -ju_x * center.x() * inv_z;
+    const float jv_y = radius * intrinsics.fy * inv_z;
+    const float jv_z = -jv_y * center.y() * inv_z;
+    const float ax = ju_x * axis_a.x() + ju_z * axis_a.z();
+    const float bx = ju_x * axis_b.x() + ju_z * axis_b.z();
+    const float ay = jv_y * axis_a.y() + jv_z * axis_a.z();
+    const float by = jv_y * axis_b.y() + jv_z * axis_b.z();
+    const float determinant = ax * by - bx * ay;
+    if (std::abs(determinant) < 1e-6f) continue;  // seen edge-on: covers no pixel
     const float extent_u = std::min(max_splat, std::sqrt(ax * ax + bx * bx));
     const float extent_v = std::min(max_splat, std::sqrt(ay * ay + by * by));
-    const int u_min = std::max(0, static_cast<int>(std::floor(u0 - extent_u + 0.5f)));
-    const int u_max = std::min(width - 1, static_cast<int>(std::floor(u0 + extent_u + 0.5f)));
-    const int v_min = std::max(0, static_cast<int>(std::floor(v0 - extent_v + 0.5f)));
-    const int v_max = std::min(height - 1, static_cast<int>(std::floor(v0 + extent_v + 0.5f)));
-    const float radius_squared = surfel.radius * surfel.radius;
+    // Truncation is floor here: negative bounds are clamped to 0 anyway.
+    const int u_min = std::max(0, static_cast<int>(u0 - extent_u + 0.5f));
+    const int u_max = std::min(width - 1, static_cast<int>(u0 + extent_u + 0.5f));
+    const int v_min = std::max(0, static_cast<int>(v0 - extent_v + 0.5f));
+    const int v_max = std::min(height - 1, static_cast<int>(v0 + extent_v + 0.5f));
+    // Per pixel: (s, t) = [A B]^-1 (du, dv) are the pixel centre's disc coordinates (inside
+    // when s^2 + t^2 <= 1); 1/depth is affine in (u, v) on the plane: 1/z = n.ray(u, v) / n.c.
+    const float inv_det = 1.f / determinant;
+    const float inv_facing = 1.f / facing;
+    const float depth_du = normal.x() * inv_fx * inv_facing;
+    const float depth_dv = normal.y() * inv_fy * inv_facing;
+    const float depth_0 =
+        (normal.z() - normal.x() * intrinsics.cx * inv_fx - normal.y() * intrinsics.cy * inv_fy) *
+        inv_facing;
+    const float blend_inverse = blend * inv_z * inv_z;  // d(1/z) = dz / z^2
     for (int v = v_min; v <= v_max; ++v) {
+      const float dv = v - v0;
+      const float row_inv_depth = depth_0 + depth_dv * v;
       for (int u = u_min; u <= u_max; ++u) {
-        // The pixel's ray (x, y, 1) meets the disc's plane where n.(t ray - c) = 0.
-        const Eigen::Vector3f ray((u - intrinsics.cx) * inv_fx, (v - intrinsics.cy) * inv_fy, 1.f);
-        const float along = normal.dot(ray);
-        if (along >= 0.f) continue;
-        const float t = facing / along;
-        const Eigen::Vector3f point = t * ray;
-        if ((point - center).squaredNorm() > radius_squared) continue;
-        const float falloff = 1.f - (point - center).squaredNorm() / radius_squared;
-        buffer[static_cast<size_t>(v) * width + u].add(t, surfel.confidence * (0.1f + falloff),
-                                                       point, normal, blend);
+        const float du = u - u0;
+        const float s = (by * du - bx * dv) * inv_det;
+        const float t = (ax * dv - ay * du) * inv_det;
+        const float r2 = s * s + t * t;
+        if (r2 > 1.f) continue;
+        const float inv_depth = row_inv_depth + depth_du * u;
+        if (inv_depth <= 0.f) continue;
+        buffer[static_cast<size_t>(v) * width + u].add(inv_depth, surfel.confidence * (1.1f - r2),
+                                                       normal, blend_inverse);
       }
     }
   }
@@ -119,7 +152,10 @@ vicc_tracking::DepthLevel renderModel(const SurfelVector& surfels,
   for (size_t i = 0; i < count; ++i) {
     const SplatPixel& pixel = buffer[i];
     if (pixel.weight <= 0.f) continue;
-    const Eigen::Vector3f point = pixel.position_sum / pixel.weight;
+    const float z = pixel.weight / pixel.inv_depth_sum;
+    const int u = static_cast<int>(i % width), v = static_cast<int>(i / width);
+    const Eigen::Vector3f point((u - intrinsics.cx) * inv_fx * z, (v - intrinsics.cy) * inv_fy * z,
+                                z);
     const float normal_length = pixel.normal_sum.norm();
     if (normal_length <= 0.f) continue;
     const Eigen::Vector3f normal = pixel.normal_sum / normal_length;

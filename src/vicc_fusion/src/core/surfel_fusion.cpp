@@ -211,13 +211,20 @@ FusionFrameStats SurfelFusion::integrate(const vicc_tracking::DepthLevel& frame,
 }
 
 void SurfelFusion::removeMarked(const std::vector<char>& remove) {
-  size_t kept = 0;
-  for (size_t i = 0; i < surfels_.size(); ++i) {
-    if (remove[i]) continue;
-    if (kept != i) surfels_[kept] = surfels_[i];
-    ++kept;
+  // Order does not matter: fill each hole with the last surfel instead of shifting the whole
+  // tail (a few removals per frame would otherwise move megabytes).
+  size_t end = surfels_.size();
+  size_t i = 0;
+  while (i < end) {
+    if (!remove[i]) {
+      ++i;
+      continue;
+    }
+    while (end > i + 1 && remove[end - 1]) --end;  // removed ones at the tail just go
+    --end;
+    if (i < end) surfels_[i++] = surfels_[end];
   }
-  surfels_.resize(kept);
+  surfels_.resize(end);
 }
 
 }  // namespace vicc_fusion

@@ -51,6 +51,9 @@ nlohmann::json makeReport(const ReconstructOptions& options, const ReconstructRu
   if (run.fusion) {
     const ReconstructRun::Fusion& fusion = *run.fusion;
     const double pipeline_ms = fusion.pipeline_ms.median;
+    auto perFrame = [&fusion](long total) {
+      return fusion.frames_fused > 0 ? static_cast<double>(total) / fusion.frames_fused : 0.0;
+    };
     report["surfels"] = {{"stable", fusion.stable},
                          {"unstable", fusion.unstable},
                          {"memory_bytes", fusion.memory_bytes},
@@ -58,6 +61,12 @@ nlohmann::json makeReport(const ReconstructOptions& options, const ReconstructRu
     report["fusion"] = {
         {"frames_fused", fusion.frames_fused},
         {"frames_aligned_to_model", fusion.frames_aligned_to_model},
+        {"per_frame_mean",
+         {{"merged", perFrame(fusion.merged)},
+          {"confirmed", perFrame(fusion.confirmed)},
+          {"added", perFrame(fusion.added)},
+          {"removed_unconfirmed", perFrame(fusion.removed_unconfirmed)},
+          {"removed_free_space", perFrame(fusion.removed_free_space)}}},
         {"median_fusion_ms", fusion.fusion_ms.median},
         {"median_model_prediction_ms", fusion.model_prediction_ms.median},
         {"median_pipeline_ms", pipeline_ms},
@@ -73,6 +82,7 @@ nlohmann::json makeReport(const ReconstructOptions& options, const ReconstructRu
          "stable surfels vs the true visible surface (point-to-plane), and the share of "
          "that surface within completeness_radius_m of a surfel"},
         {"surfels", accuracy.surfels},
+        {"surfels_outside_reference", accuracy.surfels_outside},
         {"truth_points", accuracy.truth_points},
         {"mean_distance_m", accuracy.mean_distance},
         {"median_distance_m", accuracy.median_distance},

@@ -200,6 +200,11 @@ class Reconstruction {
     ReconstructRunFusion& summary = *run_.fusion;
     ++summary.frames_fused;
     summary.surfels_refused += step.fusion.refused;
+    summary.merged += step.fusion.merged;
+    summary.confirmed += step.fusion.confirmed;
+    summary.added += step.fusion.added;
+    summary.removed_unconfirmed += step.fusion.removed_unconfirmed;
+    summary.removed_free_space += step.fusion.removed_free_space;
     if (step.fusion.refused > 0 && summary.surfels_refused == step.fusion.refused) {
       warn("the model reached its maximum of " +
            std::to_string(model_->config().fusion.max_surfels) +

@@ -16,7 +16,7 @@ std::vector<SurfacePoint> visibleSurface(const RigSimulator& rig,
   const std::vector<SurfacePoint> samples = rig.sampleSurface(config.spacing);
   const CameraModel& camera = rig.scenario().camera;
   const double min_range = rig.scenario().tof.min_range;
-  const double max_range = rig.scenario().tof.max_range;
+  const double max_range = std::min(rig.scenario().tof.max_range, config.max_distance);
   const double min_cosine = std::cos(config.max_view_angle_deg * M_PI / 180.0);
   std::vector<char> seen(samples.size(), 0);
   const std::vector<double>& times = rig.depthTimes();
@@ -27,7 +27,7 @@ std::vector<SurfacePoint> visibleSurface(const RigSimulator& rig,
     for (size_t i = 0; i < samples.size(); ++i) {
       if (seen[i]) continue;
       const Eigen::Vector3d p = map_to_camera * samples[i].position;
-      if (p.z() < min_range || p.z() > max_range) continue;
+      if (p.z() < min_range || p.norm() > max_range) continue;
       const Eigen::Vector3d n = map_to_camera.linear() * samples[i].normal;
       if (-n.dot(p.normalized()) < min_cosine) continue;  // back side or too grazing
       const Eigen::Vector2d pixel = camera.project(p);

@@ -14,7 +14,11 @@ struct VisibleSurfaceConfig {
   double spacing = 0.002;             ///< m between samples
   int frame_stride = 3;               ///< test every n-th depth frame (neighbours see the same)
   double occlusion_tolerance = 0.01;  ///< m between a sample and the rendered depth
-  double max_view_angle_deg = 80.0;   ///< grazing views beyond this do not count as seen
+  /// What counts as "seen" for completeness: a close-range scan (thesis: 0.5-0.8 m to the
+  /// object) resolves surfaces up to about this distance; further away a pico flexx pixel
+  /// covers more than the 5 mm completeness radius.
+  double max_distance = 1.0;          ///< m
+  double max_view_angle_deg = 70.0;   ///< grazing views beyond this do not count as seen
 };
 
 /// Samples of the true surface seen by the rig's depth camera, map frame, outward normals.
