@@ -21,7 +21,7 @@ PACKAGES=(
   python3-yaml
   libpotrace-dev libpng-dev
   # tests
-  libgtest-dev googletest xvfb xauth imagemagick
+  libgtest-dev googletest xvfb xauth imagemagick clang libclang-rt-14-dev
 )
 
 missing=()

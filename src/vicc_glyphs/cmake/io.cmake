@@ -1,0 +1,60 @@
+# Formats and icon import (issue 5): Orzan XML, SVG and raster (PNG) to diffusion curves.
+find_package(OpenCV REQUIRED COMPONENTS core imgproc imgcodecs)
+find_package(tinyxml2 QUIET)
+if(TARGET tinyxml2::tinyxml2)
+  set(VICC_GLYPHS_TINYXML2 tinyxml2::tinyxml2)
+else()
+  set(VICC_GLYPHS_TINYXML2 tinyxml2)
+endif()
+find_library(VICC_GLYPHS_POTRACE potrace REQUIRED)
+find_path(VICC_GLYPHS_POTRACE_INCLUDE potracelib.h REQUIRED)
+
+add_library(vicc_glyphs_io
+  src/io/text_file.cpp
+  src/io/xml_attributes.cpp
+  src/io/orzan_reader.cpp
+  src/io/orzan_writer.cpp
+  src/io/svg_number_scanner.cpp
+  src/io/svg_color.cpp
+  src/io/svg_transform.cpp
+  src/io/svg_geometry.cpp
+  src/io/svg_arc.cpp
+  src/io/svg_path_data.cpp
+  src/io/svg_shapes.cpp
+  src/io/svg_style.cpp
+  src/io/fill_regions.cpp
+  src/io/side_colors.cpp
+  src/io/svg_document.cpp
+  src/io/svg_import.cpp
+  src/io/color_quantization.cpp
+  src/io/potrace_tracing.cpp
+  src/io/raster_import.cpp
+  src/io/load.cpp
+)
+target_include_directories(vicc_glyphs_io SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS} ${VICC_GLYPHS_POTRACE_INCLUDE})
+target_compile_options(vicc_glyphs_io PRIVATE ${VICC_WARNINGS})
+target_link_libraries(vicc_glyphs_io vicc_glyphs_dci ${VICC_GLYPHS_TINYXML2} ${VICC_GLYPHS_POTRACE}
+  ${OpenCV_LIBRARIES})
+
+install(TARGETS vicc_glyphs_io
+  LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
+  ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
+install(DIRECTORY data/icons data/samples DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/data)
+
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(vicc_glyphs_io_test
+    test/io/OrzanXmlTest.cpp
+    test/io/SvgImportTest.cpp
+    test/io/SvgPartsTest.cpp
+    test/io/RasterImportTest.cpp
+    test/io/MalformedInputTest.cpp
+    test/io/LoadTest.cpp
+  )
+  target_include_directories(vicc_glyphs_io_test SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
+  target_include_directories(vicc_glyphs_io_test PRIVATE src/io)
+  target_compile_options(vicc_glyphs_io_test PRIVATE ${VICC_WARNINGS})
+  target_compile_definitions(vicc_glyphs_io_test PRIVATE
+    VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data"
+    VICC_GLYPHS_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/test/data")
+  target_link_libraries(vicc_glyphs_io_test vicc_glyphs_io ${OpenCV_LIBRARIES} gtest_main)
+endif()

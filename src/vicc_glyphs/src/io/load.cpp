@@ -1,0 +1,48 @@
+#include "vicc_glyphs/io/load.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "vicc_glyphs/io/orzan_xml.hpp"
+#include "vicc_glyphs/io/raster_import.hpp"
+#include "vicc_glyphs/io/svg_import.hpp"
+
+namespace vicc_glyphs {
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  const auto slash = path.find_last_of("/\\");
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
+  std::string extension = path.substr(dot + 1);
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+DiffusionCurveImage loadByExtension(const std::string& path, int size) {
+  const std::string extension = lowerExtension(path);
+  if (extension == "xml") return readOrzanXml(path);
+  if (extension == "svg") {
+    SvgImportOptions options;
+    options.size = size;
+    return importSvg(path, options);
+  }
+  if (extension == "png") return importRaster(path);
+  throw FormatError(path, "",
+                    "unknown extension '" + extension + "' (expected .xml, .svg or .png)");
+}
+
+}  // namespace
+
+DiffusionCurveImage loadDiffusionCurves(const std::string& path, int size) {
+  if (size < 0) throw FormatError(path, "", "negative target size");
+  DiffusionCurveImage image = loadByExtension(path, size);
+  const std::string extension = lowerExtension(path);
+  if (size > 0 && extension != "svg") image = scaledToWidth(image, size);
+  const std::string problem = validate(image);
+  if (!problem.empty()) throw FormatError(path, "", problem);
+  return image;
+}
+
+}  // namespace vicc_glyphs

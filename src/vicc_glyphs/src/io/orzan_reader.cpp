@@ -1,0 +1,201 @@
+// Reader of Orzan's XML format (conventions in orzan_conventions.hpp).
+
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "orzan_conventions.hpp"
+#include "text_file.hpp"
+#include "vicc_glyphs/io/orzan_xml.hpp"
+#include "xml_attributes.hpp"
+
+namespace vicc_glyphs {
+namespace {
+
+using io_detail::requireDouble;
+using io_detail::requireInt;
+using tinyxml2::XMLElement;
+
+constexpr int kMaxImageSide = 100000;
+
+class OrzanReader {
+ public:
+  explicit OrzanReader(std::string source) : source_(std::move(source)) {}
+
+  DiffusionCurveImage read(const std::string& text) {
+    // Reject huge files before building a DOM for them.
+    if (io_detail::countOccurrences(text, "<control_point ") > kMaxControlPointsPerFile) {
+      throw FormatError(source_, "", tooManyPoints());
+    }
+    tinyxml2::XMLDocument document;
+    io_detail::parseXmlDocument(document, text, source_);
+    const XMLElement* root = document.RootElement();
+    if (!root || std::string(root->Name()) != "curve_set") {
+      throw FormatError(source_, "root", "expected a <curve_set> root element");
+    }
+    DiffusionCurveImage image;
+    image.width = requireInt(*root, "image_width", source_, "curve_set");
+    image.height = requireInt(*root, "image_height", source_, "curve_set");
+    if (image.width <= 0 || image.height <= 0 || image.width > kMaxImageSide ||
+        image.height > kMaxImageSide) {
+      throw FormatError(source_, "curve_set",
+                        "image size " + std::to_string(image.width) + "x" +
+                            std::to_string(image.height) + " outside 1.." +
+                            std::to_string(kMaxImageSide));
+    }
+    for (const XMLElement* curve = root->FirstChildElement("curve"); curve;
+         curve = curve->NextSiblingElement("curve")) {
+      image.curves.push_back(readCurve(*curve, "curve " + std::to_string(image.curves.size())));
+    }
+    checkDeclaredCount(*root, "nb_curves", image.curves.size(), "curve_set");
+    const std::string problem = validate(image);
+    if (!problem.empty()) throw FormatError(source_, "", problem);
+    return image;
+  }
+
+ private:
+  std::string tooManyPoints() const {
+    return "more than " + std::to_string(kMaxControlPointsPerFile) +
+           " control points (limit per file)";
+  }
+
+  // The nb_* attributes are optional; when present they must match, which catches truncation.
+  void checkDeclaredCount(const XMLElement& element, const char* name, std::size_t actual,
+                          const std::string& place) const {
+    if (!element.Attribute(name)) return;
+    const int declared = requireInt(element, name, source_, place);
+    if (declared < 0 || static_cast<std::size_t>(declared) != actual) {
+      throw FormatError(source_, place,
+                        std::string(name) + "=" + std::to_string(declared) + " but " +
+                            std::to_string(actual) + " found");
+    }
+  }
+
+  const XMLElement& requireChild(const XMLElement& parent, const char* name,
+                                 const std::string& place) const {
+    const XMLElement* child = parent.FirstChildElement(name);
+    if (!child) throw FormatError(source_, place, std::string("missing <") + name + ">");
+    return *child;
+  }
+
+  DiffusionCurve readCurve(const XMLElement& element, const std::string& place) {
+    DiffusionCurve curve;
+    readControlPoints(requireChild(element, "control_points_set", place), place, curve);
+    checkDeclaredCount(element, "nb_control_points", curve.control_points.size(), place);
+    const int segments = curve.segmentCount();
+    if (segments == 0) {
+      throw FormatError(source_, place,
+                        std::to_string(curve.control_points.size()) +
+                            " control points; a curve needs 3K+1 with K >= 1");
+    }
+    const bool zero_length =
+        std::all_of(curve.control_points.begin(), curve.control_points.end(),
+                    [&](const Point2& p) { return p == curve.control_points.front(); });
+    if (zero_length) throw FormatError(source_, place, "zero-length curve (all points equal)");
+
+    // Mirroring x and y swaps the sides: the file's left colours are on our right.
+    const XMLElement& file_left = requireChild(element, "left_colors_set", place);
+    const XMLElement& file_right = requireChild(element, "right_colors_set", place);
+    curve.right_colors = readColors(file_left, "left_color", segments, place);
+    curve.left_colors = readColors(file_right, "right_color", segments, place);
+    curve.right_emits = !isBarrier(file_left);
+    curve.left_emits = !isBarrier(file_right);
+    checkDeclaredCount(element, "nb_left_colors", curve.right_colors.size(), place);
+    checkDeclaredCount(element, "nb_right_colors", curve.left_colors.size(), place);
+    if (const XMLElement* blur = element.FirstChildElement("blur_points_set")) {
+      curve.blur_points = readBlurPoints(*blur, segments, place);
+      checkDeclaredCount(element, "nb_blur_points", curve.blur_points.size(), place);
+    }
+    return curve;
+  }
+
+  void readControlPoints(const XMLElement& set, const std::string& place, DiffusionCurve& curve) {
+    for (const XMLElement* point = set.FirstChildElement("control_point"); point;
+         point = point->NextSiblingElement("control_point")) {
+      if (++total_points_ > kMaxControlPointsPerFile) {
+        throw FormatError(source_, place, tooManyPoints());
+      }
+      const std::string point_place =
+          place + " control point " + std::to_string(curve.control_points.size());
+      const double file_x = requireDouble(*point, "x", source_, point_place);
+      const double file_y = requireDouble(*point, "y", source_, point_place);
+      curve.control_points.emplace_back(file_y, file_x);
+    }
+  }
+
+  static bool isBarrier(const XMLElement& color_set) {
+    const char* boundary = color_set.Attribute("boundary");
+    return boundary && std::string(boundary) == io_detail::kBarrierBoundary;
+  }
+
+  double readPosition(const XMLElement& element, int segments, const std::string& place) const {
+    const double global_id = requireDouble(element, "globalID", source_, place);
+    const double s = global_id / io_detail::kGlobalIdPerSegment;
+    if (s < 0.0 || s > segments) {
+      throw FormatError(source_, place,
+                        "globalID " + std::string(element.Attribute("globalID")) + " outside 0.." +
+                            std::to_string(segments * 10) + " (10 per segment)");
+    }
+    return s;
+  }
+
+  std::vector<ColorPoint> readColors(const XMLElement& set, const char* name, int segments,
+                                     const std::string& curve_place) const {
+    std::vector<ColorPoint> colors;
+    for (const XMLElement* c = set.FirstChildElement(name); c; c = c->NextSiblingElement(name)) {
+      const std::string place = curve_place + " " + name + " " + std::to_string(colors.size());
+      ColorPoint point;
+      point.position = readPosition(*c, segments, place);
+      const char* channels[3] = {"R", "G", "B"};
+      for (int i = 0; i < 3; ++i) {
+        // The file labels its channels B, G, R where we have R, G, B.
+        const double value = requireDouble(*c, channels[2 - i], source_, place);
+        if (value < 0.0 || value > io_detail::kColorScale) {
+          throw FormatError(source_, place,
+                            std::string("colour channel ") + channels[2 - i] + " outside 0..255");
+        }
+        point.rgb[i] = value / io_detail::kColorScale;
+      }
+      colors.push_back(point);
+    }
+    std::stable_sort(colors.begin(), colors.end(), [](const ColorPoint& a, const ColorPoint& b) {
+      return a.position < b.position;
+    });
+    return colors;
+  }
+
+  std::vector<BlurPoint> readBlurPoints(const XMLElement& set, int segments,
+                                        const std::string& curve_place) const {
+    std::vector<BlurPoint> blur;
+    for (const XMLElement* b = set.FirstChildElement("best_scale"); b;
+         b = b->NextSiblingElement("best_scale")) {
+      const std::string place = curve_place + " best_scale " + std::to_string(blur.size());
+      BlurPoint point;
+      point.position = readPosition(*b, segments, place);
+      point.sigma = requireDouble(*b, "value", source_, place);
+      if (point.sigma < 0.0) throw FormatError(source_, place, "negative blur value");
+      blur.push_back(point);
+    }
+    std::stable_sort(blur.begin(), blur.end(), [](const BlurPoint& a, const BlurPoint& b) {
+      return a.position < b.position;
+    });
+    return blur;
+  }
+
+  std::string source_;
+  std::size_t total_points_ = 0;
+};
+
+}  // namespace
+
+DiffusionCurveImage parseOrzanXml(const std::string& text) {
+  return OrzanReader("<string>").read(text);
+}
+
+DiffusionCurveImage readOrzanXml(const std::string& path) {
+  return OrzanReader(path).read(io_detail::readTextFile(path));
+}
+
+}  // namespace vicc_glyphs

@@ -1,0 +1,65 @@
+#include "xml_attributes.hpp"
+
+#include <cmath>
+
+#include "vicc_glyphs/io/format_error.hpp"
+
+namespace vicc_glyphs {
+namespace io_detail {
+namespace {
+
+std::string where(const tinyxml2::XMLElement& element, const std::string& place) {
+  return place + " (<" + element.Name() + "> line " + std::to_string(element.GetLineNum()) + ")";
+}
+
+}  // namespace
+
+void parseXmlDocument(tinyxml2::XMLDocument& document, const std::string& text,
+                      const std::string& source) {
+  if (document.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
+    const char* reason = document.ErrorStr();
+    throw FormatError(source, "line " + std::to_string(document.ErrorLineNum()),
+                      std::string("malformed XML: ") + (reason ? reason : "unknown error"));
+  }
+}
+
+std::size_t countOccurrences(const std::string& text, const std::string& needle) {
+  std::size_t count = 0;
+  for (std::size_t at = text.find(needle); at != std::string::npos;
+       at = text.find(needle, at + needle.size())) {
+    ++count;
+  }
+  return count;
+}
+
+double requireDouble(const tinyxml2::XMLElement& element, const char* name,
+                     const std::string& source, const std::string& place) {
+  if (!element.Attribute(name)) {
+    throw FormatError(source, where(element, place), std::string("missing attribute ") + name);
+  }
+  double value = 0.0;
+  if (element.QueryDoubleAttribute(name, &value) != tinyxml2::XML_SUCCESS ||
+      !std::isfinite(value)) {
+    throw FormatError(source, where(element, place),
+                      std::string("attribute ") + name + "=\"" + element.Attribute(name) +
+                          "\" is not a finite number");
+  }
+  return value;
+}
+
+int requireInt(const tinyxml2::XMLElement& element, const char* name, const std::string& source,
+               const std::string& place) {
+  if (!element.Attribute(name)) {
+    throw FormatError(source, where(element, place), std::string("missing attribute ") + name);
+  }
+  int value = 0;
+  if (element.QueryIntAttribute(name, &value) != tinyxml2::XML_SUCCESS) {
+    throw FormatError(source, where(element, place),
+                      std::string("attribute ") + name + "=\"" + element.Attribute(name) +
+                          "\" is not an integer");
+  }
+  return value;
+}
+
+}  // namespace io_detail
+}  // namespace vicc_glyphs

@@ -1,0 +1,27 @@
+#pragma once
+// Strict tinyxml2 document and attribute access for the XML based formats: every missing or
+// malformed value becomes a FormatError that names the source, the element and the attribute.
+
+#include <tinyxml2.h>
+
+#include <string>
+
+namespace vicc_glyphs {
+namespace io_detail {
+
+/// Parses `text` into `document`; throws FormatError(source, "line N", reason) on XML errors.
+void parseXmlDocument(tinyxml2::XMLDocument& document, const std::string& text,
+                      const std::string& source);
+
+/// Number of non-overlapping occurrences of `needle` in `text` (cheap pre-parse size check).
+std::size_t countOccurrences(const std::string& text, const std::string& needle);
+
+/// The required attribute `name` of `element` as a finite double.
+double requireDouble(const tinyxml2::XMLElement& element, const char* name,
+                     const std::string& source, const std::string& place);
+/// The required attribute `name` of `element` as an int.
+int requireInt(const tinyxml2::XMLElement& element, const char* name, const std::string& source,
+               const std::string& place);
+
+}  // namespace io_detail
+}  // namespace vicc_glyphs

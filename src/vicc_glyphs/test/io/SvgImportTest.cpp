@@ -1,0 +1,161 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "curve_geometry.hpp"
+#include "vicc_glyphs/io/svg_import.hpp"
+
+namespace vicc_glyphs {
+namespace {
+
+using test::besideCurve;
+using test::flattenAll;
+using test::winding;
+
+const std::string kIcons = std::string(VICC_GLYPHS_DATA_DIR) + "/icons/";
+const std::string kTestData = std::string(VICC_GLYPHS_TEST_DATA_DIR) + "/";
+
+bool near(const Color& a, const Color& b) { return (a - b).norm() < 1e-9; }
+
+class VendoredIcon : public ::testing::TestWithParam<std::string> {};
+
+// Every curve is closed, black (the fill) on its left, white (the background) on its right,
+// and the left really is inside the icon: a point just off the curve on the left lies inside
+// the flattened outline (nonzero rule, the MDI default), a point on the right outside.
+TEST_P(VendoredIcon, ClosedCurvesWithFillInsideAndBackgroundOutside) {
+  const DiffusionCurveImage image = importSvg(kIcons + GetParam() + ".svg");
+  EXPECT_EQ(image.width, 24);
+  EXPECT_EQ(image.height, 24);
+  ASSERT_FALSE(image.curves.empty());
+  const auto outline = flattenAll(image);
+  for (std::size_t i = 0; i < image.curves.size(); ++i) {
+    const DiffusionCurve& c = image.curves[i];
+    EXPECT_EQ(c.control_points.front(), c.control_points.back()) << "curve " << i;
+    ASSERT_EQ(c.left_colors.size(), 2u) << "curve " << i;
+    ASSERT_EQ(c.right_colors.size(), 2u) << "curve " << i;
+    EXPECT_TRUE(near(c.left_colors[0].rgb, Color(0, 0, 0))) << "curve " << i;
+    EXPECT_TRUE(near(c.right_colors[0].rgb, Color(1, 1, 1))) << "curve " << i;
+    int checked = 0;
+    for (int k = 0; k < c.segmentCount(); ++k) {
+      const double s = k + 0.5;
+      const double speed = c.derivativeAt(s).norm();
+      if (speed < 1e-3) continue;
+      // Close to the curve compared to the segment, so the point stays beside this segment.
+      const double offset = std::min(0.01, 0.05 * speed);
+      EXPECT_NE(winding(outline, besideCurve(c, s, offset)), 0) << "curve " << i << " s " << s;
+      EXPECT_EQ(winding(outline, besideCurve(c, s, -offset)), 0) << "curve " << i << " s " << s;
+      ++checked;
+    }
+    EXPECT_GT(checked, 0);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(MaterialDesignIcons, VendoredIcon,
+                         ::testing::Values("weather-pouring", "virus", "brain", "heart", "lungs"));
+
+TEST(SvgImport, SizeScalesToRequestedWidth) {
+  SvgImportOptions options;
+  options.size = 240;
+  const DiffusionCurveImage big = importSvg(kIcons + "heart.svg", options);
+  const DiffusionCurveImage small = importSvg(kIcons + "heart.svg");
+  EXPECT_EQ(big.width, 240);
+  EXPECT_EQ(big.height, 240);
+  ASSERT_EQ(big.curves.size(), small.curves.size());
+  // The heart path starts at M12,21.35.
+  EXPECT_LT((small.curves[0].control_points.front() - Point2(12, 21.35)).norm(), 1e-9);
+  for (std::size_t j = 0; j < big.curves[0].control_points.size(); ++j) {
+    EXPECT_LT((big.curves[0].control_points[j] - 10.0 * small.curves[0].control_points[j]).norm(),
+              1e-9);
+  }
+}
+
+TEST(SvgImport, BackgroundOptionIsTheOutsideColour) {
+  SvgImportOptions options;
+  options.background = Color(0.2, 0.4, 0.6);
+  const DiffusionCurveImage image = importSvg(kIcons + "heart.svg", options);
+  EXPECT_TRUE(near(image.curves[0].right_colors[0].rgb, Color(0.2, 0.4, 0.6)));
+}
+
+// The hole's curve has the background towards the hole centre and the fill away from it.
+void expectDonut(const std::string& file) {
+  const DiffusionCurveImage image = importSvg(kTestData + file);
+  ASSERT_EQ(image.curves.size(), 2u);
+  const Color navy(0, 0, 128 / 255.0);
+  const Point2 centre(20, 20);
+  for (const DiffusionCurve& c : image.curves) {
+    const double radius = (c.pointAt(0.5) - centre).norm();
+    const Point2 left = besideCurve(c, 0.5, 0.5);
+    const bool left_faces_centre = (left - centre).norm() < radius;
+    const Color toward_centre = left_faces_centre ? c.left_colors[0].rgb : c.right_colors[0].rgb;
+    const Color away = left_faces_centre ? c.right_colors[0].rgb : c.left_colors[0].rgb;
+    if (radius > 12.0) {  // outer circle: fill inside, background outside
+      EXPECT_TRUE(near(toward_centre, navy)) << file;
+      EXPECT_TRUE(near(away, Color(1, 1, 1))) << file;
+    } else {  // hole: background inside the hole
+      EXPECT_NEAR(radius, 8.0, 1e-2);
+      EXPECT_TRUE(near(toward_centre, Color(1, 1, 1))) << file;
+      EXPECT_TRUE(near(away, navy)) << file;
+    }
+    // The fill is always on the left.
+    EXPECT_TRUE(near(c.left_colors[0].rgb, navy)) << file;
+  }
+}
+
+TEST(SvgImport, EvenOddDonutHasBackgroundInTheHole) { expectDonut("donut_evenodd.svg"); }
+TEST(SvgImport, NonZeroDonutHasBackgroundInTheHole) { expectDonut("donut_nonzero.svg"); }
+
+TEST(SvgImport, EvenOddRuleDecidesTheHoleNotTheDirection) {
+  // The evenodd file's circles run the same way; with nonzero there would be no hole, and both
+  // sides of the inner circle would be filled.
+  std::string text =
+      "<svg xmlns='http://www.w3.org/2000/svg' viewBox='0 0 40 40'><path fill='#000080' "
+      "d='M 20 4 A 16 16 0 1 1 20 36 A 16 16 0 1 1 20 4 Z M 20 12 A 8 8 0 1 1 20 28 A 8 8 0 1 1 "
+      "20 12 Z'/></svg>";
+  const DiffusionCurveImage image = parseSvg(text);
+  ASSERT_EQ(image.curves.size(), 2u);
+  const Color navy(0, 0, 128 / 255.0);
+  const DiffusionCurve& inner = image.curves[1];
+  EXPECT_TRUE(near(inner.left_colors[0].rgb, navy));
+  EXPECT_TRUE(near(inner.right_colors[0].rgb, navy));
+}
+
+TEST(SvgImport, ColouredShapesGetTheirFillAndTheColourAround) {
+  const DiffusionCurveImage image = importSvg(kTestData + "coloured_shapes.svg");
+  EXPECT_EQ(image.width, 100);
+  EXPECT_EQ(image.height, 80);
+  // rect, circle, polygon; the fill="none" square adds nothing.
+  ASSERT_EQ(image.curves.size(), 3u);
+  const DiffusionCurve& rect = image.curves[0];
+  const DiffusionCurve& disc = image.curves[1];
+  const DiffusionCurve& triangle = image.curves[2];
+  EXPECT_TRUE(near(rect.left_colors[0].rgb, Color(1, 0, 0)));
+  EXPECT_TRUE(near(rect.right_colors[0].rgb, Color(1, 1, 1)));
+  // The blue disc lies on the red square: red is its outside colour.
+  EXPECT_TRUE(near(disc.left_colors[0].rgb, Color(0, 0, 1)));
+  EXPECT_TRUE(near(disc.right_colors[0].rgb, Color(1, 0, 0)));
+  EXPECT_TRUE(near(triangle.left_colors[0].rgb, Color(0, 1, 0)));
+  EXPECT_TRUE(near(triangle.right_colors[0].rgb, Color(1, 1, 1)));
+  // The group's translate(60 10) moved the triangle's first corner from (0,0).
+  EXPECT_LT((triangle.control_points.front() - Point2(60, 10)).norm(), 1e-9);
+  for (const Point2& p : disc.control_points) {
+    EXPECT_NEAR((p - Point2(30, 30)).norm(), 10.0, 1.5);  // control points hug the circle
+  }
+}
+
+TEST(SvgImport, TransformsNestAndApplyInOrder) {
+  const std::string text =
+      "<svg xmlns='http://www.w3.org/2000/svg' width='100' height='100'>"
+      "<g transform='translate(50,50)'><g transform='rotate(90)'>"
+      "<rect x='0' y='0' width='10' height='20' transform='scale(2 1)' fill='black'/>"
+      "</g></g></svg>";
+  const DiffusionCurveImage image = parseSvg(text);
+  ASSERT_EQ(image.curves.size(), 1u);
+  // Corner (20, 20) after scale -> rotate 90 degrees (x, y) -> (-y, x) -> translate.
+  bool found = false;
+  for (const Point2& p : image.curves[0].control_points)
+    found |= (p - Point2(30, 70)).norm() < 1e-9;
+  EXPECT_TRUE(found);
+}
+
+}  // namespace
+}  // namespace vicc_glyphs
