@@ -41,6 +41,10 @@ class FrameToModel {
                               const vicc_tracking::FrameReport& report,
                               const cv::Mat1f* intensity = nullptr);
 
+  /// Fusion alone, for poses from elsewhere (an external tracker): no prediction.
+  FrameToModelStep fuse(const vicc_tracking::DepthLevel& frame,
+                        const Eigen::Isometry3d& camera_pose, const cv::Mat1f* intensity = nullptr);
+
   const SurfelFusion& fusion() const { return fusion_; }
   const FrameToModelConfig& config() const { return config_; }
   void reset() { fusion_.reset(); }

@@ -10,7 +10,7 @@
 namespace vicc_fusion {
 
 struct ModelPredictionConfig {
-  double stable_confidence = 3.0;    ///< only surfels at or above this confidence are drawn
+  double stable_confidence = 3.0;  ///< only surfels at or above this confidence are drawn
   /// Surfel radii just cover a regular grid (half the pixel diagonal), so rounding leaves
   /// pinholes; drawing the discs a little larger closes them (the blend averages overlaps).
   double splat_radius_scale = 1.1;

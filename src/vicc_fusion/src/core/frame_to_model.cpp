@@ -36,10 +36,7 @@ FrameToModelStep FrameToModel::afterFrame(vicc_tracking::Tracker& tracker,
   const vicc_tracking::DepthPyramid& frame = tracker.currentFrame();
   if (frame.empty()) return step;
 
-  const auto fusion_start = std::chrono::steady_clock::now();
-  step.fusion = fusion_.integrate(frame.front(), report.camera_pose, intensity);
-  step.fused = true;
-  step.fusion_ms = millisecondsSince(fusion_start);
+  step = fuse(frame.front(), report.camera_pose, intensity);
 
   if (!config_.track_against_model) return step;
   const auto prediction_start = std::chrono::steady_clock::now();
@@ -54,6 +51,17 @@ FrameToModelStep FrameToModel::afterFrame(vicc_tracking::Tracker& tracker,
     step.prediction_used = tracker.useModelPrediction(std::move(prediction));
   }
   step.prediction_ms = millisecondsSince(prediction_start);
+  return step;
+}
+
+FrameToModelStep FrameToModel::fuse(const vicc_tracking::DepthLevel& frame,
+                                    const Eigen::Isometry3d& camera_pose,
+                                    const cv::Mat1f* intensity) {
+  FrameToModelStep step;
+  const auto fusion_start = std::chrono::steady_clock::now();
+  step.fusion = fusion_.integrate(frame, camera_pose, intensity);
+  step.fused = true;
+  step.fusion_ms = millisecondsSince(fusion_start);
   return step;
 }
 

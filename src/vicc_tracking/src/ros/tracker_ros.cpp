@@ -207,6 +207,7 @@ void TrackerRos::processDepth(const sensor_msgs::ImageConstPtr& depth) {
     return;
   }
   publish(report, *depth);
+  if (frame_hook_) frame_hook_(*tracker_, report, *depth, map_alignment_);
 }
 
 Eigen::Isometry3d TrackerRos::mapAlignment(const Eigen::Isometry3d& first_pose,

@@ -4,6 +4,7 @@
 // are published. Bad input is reported with a throttled warning and dropped.
 
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -44,6 +45,16 @@ class TrackerRos {
   /// Throws std::invalid_argument when a parameter is invalid.
   TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
 
+  /// Called after every accepted depth frame, in the depth callback, with the tracker (its
+  /// currentFrame() is the frame just tracked), the report, the depth message and
+  /// T_published-map_tracker-map. Lets the fusion work on the frame without a copy and hand
+  /// its model prediction back (frame-to-model) before the next frame arrives.
+  using FrameHook = std::function<void(Tracker& tracker, const FrameReport& report,
+                                       const sensor_msgs::Image& depth,
+                                       const Eigen::Isometry3d& map_alignment)>;
+  void setFrameHook(FrameHook hook) { frame_hook_ = std::move(hook); }
+  const TrackerRosSettings& settings() const { return settings_; }
+
  private:
   void onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info);
   void onImu(const sensor_msgs::ImuConstPtr& imu);
@@ -60,6 +71,7 @@ class TrackerRos {
 
   TrackerConfig config_;
   TrackerRosSettings settings_;
+  FrameHook frame_hook_;
   std::unique_ptr<Tracker> tracker_;
   std::optional<CameraModel> camera_;
   std::string imu_frame_;

@@ -1,0 +1,80 @@
+#pragma once
+// ROS interface of the surfel fusion, shared by the `fusion` node and nodelet. Two modes:
+// - track: true (default): the node runs the vicc_tracking tracker itself (same topics and
+//   parameters as the tracker node) and fuses every tracked frame in the depth callback; the
+//   model prediction goes straight back to the tracker (frame-to-model) without copying a
+//   frame. Where the model does not cover the view yet, the tracker stays frame-to-frame.
+// - track: false: an external tracker publishes the camera pose on tf (map_frame -> depth
+//   frame); the node only fuses, with that pose at each depth stamp.
+// Both publish the stable model on ~model (PointCloud2, throttled, only with subscribers) and
+// serve ~save_model (binary PLY).
+
+#include <memory>
+#include <optional>
+
+#include <message_filters/subscriber.h>
+#include <ros/ros.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/Image.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/message_filter.h>
+#include <tf2_ros/transform_listener.h>
+#include <vicc_msgs/SaveModel.h>
+
+#include "vicc_fusion/frame_to_model.hpp"
+#include "vicc_tracking/ros/tracker_ros.hpp"
+
+namespace vicc_fusion {
+
+struct FusionRosSettings {
+  bool track = true;
+  std::string map_frame = "map";  ///< track: false only; with track: true the tracker's
+  double publish_rate = 1.0;      ///< Hz of ~model; 0 = never
+  /// track: false: depth frames held until the external tracker's pose for their stamp is on
+  /// tf (tf2_ros::MessageFilter, never blocking the callbacks); the oldest go first.
+  int pose_queue_size = 10;
+  void validate() const;
+};
+
+/// Private parameters: track, map_frame, publish_rate, pose_queue_size, frame_to_model,
+/// min_prediction_coverage and fusion/* (the SurfelFusionConfig fields).
+FusionRosSettings readFusionRosSettings(const ros::NodeHandle& private_nh);
+FrameToModelConfig readFrameToModelConfig(const ros::NodeHandle& private_nh);
+
+class FusionRos {
+ public:
+  /// Throws std::invalid_argument when a parameter is invalid.
+  FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+
+ private:
+  void onTrackedFrame(vicc_tracking::Tracker& tracker, const vicc_tracking::FrameReport& report,
+                      const sensor_msgs::Image& depth, const Eigen::Isometry3d& map_alignment);
+  void onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info);
+  void onDepth(const sensor_msgs::ImageConstPtr& depth);
+  void afterFusion(const FusionFrameStats& stats, const ros::Time& stamp);
+  bool onSaveModel(vicc_msgs::SaveModel::Request& request,
+                   vicc_msgs::SaveModel::Response& response);
+
+  FusionRosSettings settings_;
+  FrameToModel model_;
+  std::string frame_id_;  ///< frame of the published model
+  Eigen::Isometry3d model_to_frame_ = Eigen::Isometry3d::Identity();
+  bool warned_full_ = false;
+  ros::Time last_publish_;
+
+  // track: true
+  std::unique_ptr<vicc_tracking::TrackerRos> tracker_;
+  // track: false
+  std::unique_ptr<vicc_tracking::DepthPreprocessor> preprocessor_;
+  std::optional<vicc_tracking::CameraModel> camera_;
+  std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
+  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  std::unique_ptr<message_filters::Subscriber<sensor_msgs::Image>> depth_sub_;
+  std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::Image>> depth_pose_filter_;
+  ros::Subscriber info_sub_;
+
+  ros::Publisher model_pub_;
+  ros::ServiceServer save_service_;
+};
+
+}  // namespace vicc_fusion

@@ -1,0 +1,185 @@
+#include "vicc_fusion/ros/fusion_ros.hpp"
+
+#include <stdexcept>
+
+#include "vicc_fusion/ros/surfel_cloud.hpp"
+#include "vicc_fusion/surfel_io.hpp"
+#include "vicc_tracking/ros/conversions.hpp"
+#include "vicc_tracking/ros/parameters.hpp"
+
+namespace vicc_fusion {
+namespace {
+
+constexpr double kWarnPeriod = 5.0;  // s between repeated warnings
+using vicc_tracking::readOptionalParam;
+
+}  // namespace
+
+void FusionRosSettings::validate() const {
+  if (map_frame.empty()) throw std::invalid_argument("fusion: map_frame must not be empty");
+  if (!(publish_rate >= 0.0)) throw std::invalid_argument("fusion: publish_rate must be >= 0");
+  if (pose_queue_size < 1) throw std::invalid_argument("fusion: pose_queue_size must be >= 1");
+}
+
+FusionRosSettings readFusionRosSettings(const ros::NodeHandle& private_nh) {
+  FusionRosSettings settings;
+  readOptionalParam(private_nh, "track", settings.track);
+  readOptionalParam(private_nh, "map_frame", settings.map_frame);
+  readOptionalParam(private_nh, "publish_rate", settings.publish_rate);
+  readOptionalParam(private_nh, "pose_queue_size", settings.pose_queue_size);
+  settings.validate();
+  return settings;
+}
+
+FrameToModelConfig readFrameToModelConfig(const ros::NodeHandle& private_nh) {
+  FrameToModelConfig config;
+  readOptionalParam(private_nh, "frame_to_model", config.track_against_model);
+  readOptionalParam(private_nh, "min_prediction_coverage", config.min_prediction_coverage);
+  SurfelFusionConfig& fusion = config.fusion;
+  readOptionalParam(private_nh, "fusion/supersampling", fusion.supersampling);
+  readOptionalParam(private_nh, "fusion/max_depth_difference", fusion.max_depth_difference);
+  readOptionalParam(private_nh, "fusion/max_normal_angle_deg", fusion.max_normal_angle_deg);
+  readOptionalParam(private_nh, "fusion/max_radius_growth", fusion.max_radius_growth);
+  readOptionalParam(private_nh, "fusion/confidence_sigma", fusion.confidence_sigma);
+  readOptionalParam(private_nh, "fusion/stable_confidence", fusion.stable_confidence);
+  readOptionalParam(private_nh, "fusion/unstable_lifetime", fusion.unstable_lifetime);
+  readOptionalParam(private_nh, "fusion/free_space_margin", fusion.free_space_margin);
+  readOptionalParam(private_nh, "fusion/max_view_distance", fusion.max_view_distance);
+  readOptionalParam(private_nh, "fusion/max_surfels", fusion.max_surfels);
+  config.validate();
+  return config;
+}
+
+FusionRos::FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
+    : settings_(readFusionRosSettings(private_nh)), model_(readFrameToModelConfig(private_nh)) {
+  model_pub_ = private_nh.advertise<sensor_msgs::PointCloud2>("model", 1, true);
+  save_service_ = private_nh.advertiseService("save_model", &FusionRos::onSaveModel, this);
+  if (settings_.track) {
+    tracker_ = std::make_unique<vicc_tracking::TrackerRos>(nh, private_nh);
+    frame_id_ = tracker_->settings().map_frame;
+    tracker_->setFrameHook(
+        [this](vicc_tracking::Tracker& tracker, const vicc_tracking::FrameReport& report,
+               const sensor_msgs::Image& depth, const Eigen::Isometry3d& map_alignment) {
+          onTrackedFrame(tracker, report, depth, map_alignment);
+        });
+    ROS_INFO("fusion: tracking %s against the model, publishing ~model in %s",
+             model_.config().track_against_model ? "frame-to-model" : "frame-to-frame",
+             frame_id_.c_str());
+    return;
+  }
+  frame_id_ = settings_.map_frame;
+  vicc_tracking::PreprocessingConfig preprocessing =
+      vicc_tracking::readTrackerConfig(private_nh).preprocessing;
+  preprocessing.pyramid_levels = 1;
+  preprocessor_ = std::make_unique<vicc_tracking::DepthPreprocessor>(preprocessing);
+  tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
+  tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
+  info_sub_ = nh.subscribe("depth/camera_info", 2, &FusionRos::onCameraInfo, this);
+  depth_sub_ = std::make_unique<message_filters::Subscriber<sensor_msgs::Image>>(
+      nh, "depth/image", settings_.pose_queue_size);
+  depth_pose_filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::Image>>(
+      *depth_sub_, *tf_buffer_, frame_id_, settings_.pose_queue_size, nh);
+  depth_pose_filter_->registerCallback(&FusionRos::onDepth, this);
+  depth_pose_filter_->registerFailureCallback(
+      [](const sensor_msgs::ImageConstPtr& depth,
+         tf2_ros::filter_failure_reasons::FilterFailureReason) {
+        ROS_WARN_THROTTLE(kWarnPeriod,
+                          "fusion: no pose on tf for the depth frame at %.3f (%s); not fused",
+                          depth->header.stamp.toSec(), depth->header.frame_id.c_str());
+      });
+  ROS_INFO("fusion: fusing %s with the poses on tf (%s -> depth frame)",
+           depth_sub_->getTopic().c_str(), frame_id_.c_str());
+}
+
+void FusionRos::onTrackedFrame(vicc_tracking::Tracker& tracker,
+                               const vicc_tracking::FrameReport& report,
+                               const sensor_msgs::Image& depth,
+                               const Eigen::Isometry3d& map_alignment) {
+  try {
+    const FrameToModelStep step = model_.afterFrame(tracker, report);
+    model_to_frame_ = map_alignment;
+    if (step.fused) afterFusion(step.fusion, depth.header.stamp);
+  } catch (const std::exception& error) {
+    ROS_WARN_THROTTLE(kWarnPeriod, "fusion: frame not fused: %s", error.what());
+  }
+}
+
+void FusionRos::onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info) {
+  try {
+    const vicc_tracking::CameraModel camera = vicc_tracking::cameraModelFromInfo(*info);
+    if (!camera_ || camera_->width != camera.width || camera_->height != camera.height ||
+        camera_->fx != camera.fx || camera_->distortion != camera.distortion) {
+      preprocessor_->setCamera(camera);
+      camera_ = camera;
+    }
+  } catch (const std::exception& error) {
+    ROS_WARN_THROTTLE(kWarnPeriod, "fusion: invalid camera_info ignored: %s", error.what());
+  }
+}
+
+void FusionRos::onDepth(const sensor_msgs::ImageConstPtr& depth) {
+  if (!camera_) {
+    ROS_WARN_THROTTLE(kWarnPeriod, "fusion: no valid camera_info yet; depth dropped");
+    return;
+  }
+  Eigen::Isometry3d camera_pose;
+  try {  // the message filter let the frame through: its pose is on tf now
+    camera_pose = vicc_tracking::isometryFromTransform(
+        tf_buffer_
+            ->lookupTransform(settings_.map_frame, depth->header.frame_id, depth->header.stamp)
+            .transform);
+  } catch (const std::exception& error) {
+    ROS_WARN_THROTTLE(kWarnPeriod, "fusion: no pose for the depth frame at %.3f: %s",
+                      depth->header.stamp.toSec(), error.what());
+    return;
+  }
+  try {
+    const vicc_tracking::DepthPyramid frame =
+        preprocessor_->process(vicc_tracking::depthImageView(*depth));
+    afterFusion(model_.fuse(frame.front(), camera_pose).fusion, depth->header.stamp);
+  } catch (const std::exception& error) {
+    ROS_WARN_THROTTLE(kWarnPeriod, "fusion: depth image dropped: %s", error.what());
+  }
+}
+
+void FusionRos::afterFusion(const FusionFrameStats& stats, const ros::Time& stamp) {
+  if (stats.refused > 0 && !warned_full_) {
+    ROS_WARN("fusion: the model reached max_surfels (%d): new surface is no longer added",
+             model_.config().fusion.max_surfels);
+    warned_full_ = true;
+  }
+  if (settings_.publish_rate <= 0.0 || model_pub_.getNumSubscribers() == 0) return;
+  if (!last_publish_.isZero() && stamp > last_publish_ &&
+      (stamp - last_publish_).toSec() < 1.0 / settings_.publish_rate) {
+    return;
+  }
+  last_publish_ = stamp;
+  model_pub_.publish(
+      toPointCloud2(model_.fusion().stableSurfels(), model_to_frame_, frame_id_, stamp));
+}
+
+bool FusionRos::onSaveModel(vicc_msgs::SaveModel::Request& request,
+                            vicc_msgs::SaveModel::Response& response) {
+  try {
+    if (request.path.empty()) throw std::invalid_argument("no path given");
+    SurfelVector surfels = model_.fusion().stableSurfels();
+    const Eigen::Isometry3f transform = model_to_frame_.cast<float>();
+    for (Surfel& surfel : surfels) {  // in the published frame, as on ~model
+      surfel.position = transform * surfel.position;
+      surfel.normal = transform.linear() * surfel.normal;
+    }
+    saveSurfelsPly(request.path, surfels);
+    response.success = true;
+    response.surfels = static_cast<uint32_t>(surfels.size());
+    response.message = "wrote " + std::to_string(surfels.size()) + " stable surfels to " +
+                       request.path + " (" + frame_id_ + " frame)";
+    ROS_INFO("fusion: %s", response.message.c_str());
+  } catch (const std::exception& error) {
+    response.success = false;
+    response.message = error.what();
+    ROS_WARN("fusion: save_model failed: %s", error.what());
+  }
+  return true;  // the outcome is in the response
+}
+
+}  // namespace vicc_fusion

@@ -1,0 +1,149 @@
+// rostest: the fusion node (tracker inside, frame-to-model) publishes a model that lies on the
+// simulator's true surface, tracks the ground truth, and saves the model on request.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <nav_msgs/Odometry.h>
+#include <ros/ros.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <sensor_msgs/point_cloud2_iterator.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+#include <vicc_msgs/SaveModel.h>
+#include <vicc_msgs/TrackingStatus.h>
+
+#include "vicc_fusion/model_accuracy.hpp"
+#include "vicc_fusion/surfel_io.hpp"
+#include "vicc_tracking/ros/conversions.hpp"
+#include "vicc_tracking/tracker.hpp"
+
+namespace {
+
+std::string g_surface_path;
+// The tracker's topics: the fusion node's own (track: true) or an external tracker node's.
+std::string g_tracker_namespace = "/fusion";
+
+class FusionNodeTest : public ::testing::Test {
+ protected:
+  FusionNodeTest() : listener_(buffer_) {
+    model_sub_ = nh_.subscribe("/fusion/model", 5, &FusionNodeTest::onModel, this);
+    status_sub_ =
+        nh_.subscribe(g_tracker_namespace + "/status", 1000, &FusionNodeTest::onStatus, this);
+    odom_sub_ = nh_.subscribe(g_tracker_namespace + "/odom", 1000, &FusionNodeTest::onOdom, this);
+  }
+
+  void onModel(const sensor_msgs::PointCloud2& cloud) {
+    ++clouds_;
+    last_cloud_ = cloud;
+  }
+  void onStatus(const vicc_msgs::TrackingStatus& status) { statuses_.push_back(status); }
+  void onOdom(const nav_msgs::Odometry& odom) { odometry_.push_back(odom); }
+
+  vicc_fusion::SurfelVector surfelsOf(const sensor_msgs::PointCloud2& cloud) const {
+    vicc_fusion::SurfelVector surfels;
+    sensor_msgs::PointCloud2ConstIterator<float> position(cloud, "x");
+    sensor_msgs::PointCloud2ConstIterator<float> normal(cloud, "normal_x");
+    sensor_msgs::PointCloud2ConstIterator<float> radius(cloud, "radius");
+    sensor_msgs::PointCloud2ConstIterator<float> confidence(cloud, "confidence");
+    for (; position != position.end(); ++position, ++normal, ++radius, ++confidence) {
+      vicc_fusion::Surfel surfel;
+      surfel.position = Eigen::Vector3f(position[0], position[1], position[2]);
+      surfel.normal = Eigen::Vector3f(normal[0], normal[1], normal[2]);
+      surfel.radius = *radius;
+      surfel.confidence = *confidence;
+      surfels.push_back(surfel);
+    }
+    return surfels;
+  }
+
+  ros::NodeHandle nh_;
+  tf2_ros::Buffer buffer_{ros::Duration(60.0)};
+  tf2_ros::TransformListener listener_;
+  ros::Subscriber model_sub_, status_sub_, odom_sub_;
+  int clouds_ = 0;
+  sensor_msgs::PointCloud2 last_cloud_;
+  std::vector<vicc_msgs::TrackingStatus> statuses_;
+  std::vector<nav_msgs::Odometry> odometry_;
+};
+
+TEST_F(FusionNodeTest, ModelLiesOnTheTrueSurface) {
+  // Wait for the recording to end: no new status for 3 s after the last one.
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(150.0);
+  ros::WallTime last_change = ros::WallTime::now();
+  size_t last_count = 0;
+  while (ros::ok() && ros::WallTime::now() < deadline) {
+    ros::spinOnce();
+    ros::WallDuration(0.02).sleep();
+    if (statuses_.size() != last_count) {
+      last_count = statuses_.size();
+      last_change = ros::WallTime::now();
+    }
+    if (last_count > 20 && ros::WallTime::now() - last_change > ros::WallDuration(3.0)) break;
+  }
+  ASSERT_GT(odometry_.size(), 40u) << "too few tracked poses";
+  ASSERT_GT(clouds_, 1) << "the model was not published";
+
+  // The poses follow the truth (frame-to-model inside the fusion node, or the external
+  // tracker's), and no frame was lost.
+  int lost = 0;
+  for (const auto& status : statuses_)
+    lost += status.state == vicc_msgs::TrackingStatus::STATE_LOST;
+  EXPECT_EQ(lost, 0);
+  double max_error = 0.0;
+  for (const auto& odom : odometry_) {
+    try {
+      const auto truth =
+          buffer_.lookupTransform("map", "pico_flexx_optical_frame_gt", odom.header.stamp);
+      const auto& p = odom.pose.pose.position;
+      max_error =
+          std::max(max_error, (vicc_tracking::isometryFromTransform(truth.transform).translation() -
+                               Eigen::Vector3d(p.x, p.y, p.z))
+                                  .norm());
+    } catch (const std::exception&) {
+    }
+  }
+  EXPECT_LT(max_error, 0.01) << "metres";
+
+  // The published model (map aligned to the ground truth at the first frame) against the
+  // true surface the recording saw.
+  EXPECT_EQ(last_cloud_.header.frame_id, "map");
+  const vicc_fusion::SurfelVector surfels = surfelsOf(last_cloud_);
+  ASSERT_GT(surfels.size(), 5000u);
+  const auto truth = vicc_fusion::loadTruthSurface(g_surface_path);
+  const vicc_fusion::ModelAccuracy accuracy =
+      vicc_fusion::evaluateModel(surfels, truth, Eigen::Isometry3d::Identity());
+  EXPECT_LT(accuracy.mean_distance, 0.003) << "metres";
+  EXPECT_LT(accuracy.p95_distance, 0.01) << "metres";
+  EXPECT_GT(accuracy.completeness, 0.6);
+  EXPECT_LT(accuracy.surfels_outside, surfels.size() / 10);
+
+  // ~save_model writes what ~model shows.
+  vicc_msgs::SaveModel save;
+  save.request.path = ::testing::TempDir() + "/vicc_fusion_rostest_model.ply";
+  ASSERT_TRUE(ros::service::call("/fusion/save_model", save));
+  EXPECT_TRUE(save.response.success) << save.response.message;
+  EXPECT_GE(save.response.surfels, surfels.size());
+  EXPECT_EQ(vicc_fusion::loadSurfelsPly(save.request.path).size(), save.response.surfels);
+  std::remove(save.request.path.c_str());
+  save.request.path = "/nonexistent/dir/model.ply";
+  ASSERT_TRUE(ros::service::call("/fusion/save_model", save));
+  EXPECT_FALSE(save.response.success);
+  EXPECT_FALSE(save.response.message.empty());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "fusion_rostest");
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: fusion_rostest TRUE_SURFACE.ply\n");
+    return 2;
+  }
+  g_surface_path = argv[1];
+  ros::NodeHandle("~").param<std::string>("tracker_namespace", g_tracker_namespace, "/fusion");
+  return RUN_ALL_TESTS();
+}
