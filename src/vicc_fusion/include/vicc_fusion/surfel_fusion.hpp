@@ -22,6 +22,7 @@ struct FusionFrameStats {
   int added = 0;                ///< new unstable surfels
   int refused = 0;              ///< new surfels not added: max_surfels reached
   int removed_unconfirmed = 0;  ///< unstable surfels older than unstable_lifetime frames
+  int merged_duplicates = 0;    ///< surfels merged into a neighbour they overlap (same surface)
   int removed_free_space = 0;   ///< surfels seen through until < 1 observation's confidence
 };
 
@@ -55,6 +56,7 @@ class SurfelFusion {
   /// Gaussian measurement weight per pixel (thesis: accuracy falls off with the distance to
   /// the sensor centre), cached per image size.
   const std::vector<float>& pixelWeights(const vicc_tracking::PinholeIntrinsics& intrinsics);
+  void mergeDuplicate(int duplicate, int into, std::vector<char>& remove, FusionFrameStats& stats);
   void removeMarked(const std::vector<char>& remove);
 
   SurfelFusionConfig config_;

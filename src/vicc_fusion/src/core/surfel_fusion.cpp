@@ -122,6 +122,8 @@ FusionFrameStats SurfelFusion::integrate(const vicc_tracking::DepthLevel& frame,
 
       int best = IndexMap::kEmpty;
       float best_confidence = -1.f;
+      int matches[64];  // all candidates that pass the tests (at most factor^2 <= 64)
+      int match_count = 0;
       const int* cells = index_map_.pixelCells(u, v);
       for (int cell = 0; cell < cells_per_pixel; ++cell) {
         const int candidate = cells[cell];
@@ -134,6 +136,7 @@ FusionFrameStats SurfelFusion::integrate(const vicc_tracking::DepthLevel& frame,
         }
         if (std::abs(surfel_depth - vertex.z()) > max_depth_difference) continue;
         if (surfel.normal.dot(normal_map) < min_normal_cosine_) continue;
+        matches[match_count++] = candidate;
         if (surfel.confidence > best_confidence) {
           best = candidate;
           best_confidence = surfel.confidence;
@@ -165,6 +168,9 @@ FusionFrameStats SurfelFusion::integrate(const vicc_tracking::DepthLevel& frame,
         }
         surfel.confidence = c + weight;
         surfel.last_seen = frame_index;
+        for (int m = 0; m < match_count; ++m) {
+          if (matches[m] != best) mergeDuplicate(matches[m], best, remove, stats);
+        }
         continue;
       }
       if (surfels_.size() >= static_cast<size_t>(config_.max_surfels)) {
@@ -208,6 +214,27 @@ FusionFrameStats SurfelFusion::integrate(const vicc_tracking::DepthLevel& frame,
   remove.resize(surfels_.size(), 0);  // surfels added this frame stay
   removeMarked(remove);
   return stats;
+}
+
+void SurfelFusion::mergeDuplicate(int duplicate, int into, std::vector<char>& remove,
+                                  FusionFrameStats& stats) {
+  // Keller et al.: points with similar position and normal and overlapping radii are merged.
+  // Views from different distances otherwise leave several surfels on one spot, which
+  // doubles the model (and the cost of every model prediction) without adding detail.
+  if (static_cast<size_t>(duplicate) >= remove.size() || remove[duplicate]) return;
+  Surfel& target = surfels_[into];
+  const Surfel& other = surfels_[duplicate];
+  if ((other.position - target.position).norm() > std::min(target.radius, other.radius)) return;
+  const float total = target.confidence + other.confidence;
+  target.position =
+      (target.confidence * target.position + other.confidence * other.position) / total;
+  target.normal =
+      (target.confidence * target.normal + other.confidence * other.normal).normalized();
+  target.radius = (target.confidence * target.radius + other.confidence * other.radius) / total;
+  target.confidence = total;
+  target.created = std::min(target.created, other.created);
+  remove[duplicate] = 1;
+  ++stats.merged_duplicates;
 }
 
 void SurfelFusion::removeMarked(const std::vector<char>& remove) {

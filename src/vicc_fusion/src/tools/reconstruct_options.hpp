@@ -18,13 +18,14 @@ struct ReconstructOptions {
   int frame_step = 1;
   std::string trajectory_path;
   std::string cloud_path;
-  std::string mesh_path;          ///< optional surface mesh of the stable surfels
-  bool frame_to_model = true;     ///< false: fuse, but track frame-to-frame (comparison)
-  bool fusion = true;             ///< false: tracking only (no model, no cloud)
+  std::string mesh_path;       ///< optional surface mesh of the stable surfels
+  bool frame_to_model = true;  ///< false: fuse, but track frame-to-frame (comparison)
+  bool fusion = true;          ///< false: tracking only (no model, no cloud)
   std::string report_path;
   std::string ground_truth_path;
-  std::string truth_surface_path;  ///< optional true surface PLY (vicc_make_bag --surface)  ///< optional TUM file: adds the error against it to the report
-  bool quiet = false;             ///< no progress line
+  std::string truth_surface_path;  ///< optional true surface PLY (vicc_make_bag --surface)  ///<
+                                   ///< optional TUM file: adds the error against it to the report
+  bool quiet = false;              ///< no progress line
 };
 
 /// Throws std::invalid_argument with a message for the user on bad arguments.

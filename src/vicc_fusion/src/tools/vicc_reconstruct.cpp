@@ -205,6 +205,7 @@ class Reconstruction {
     summary.added += step.fusion.added;
     summary.removed_unconfirmed += step.fusion.removed_unconfirmed;
     summary.removed_free_space += step.fusion.removed_free_space;
+    summary.merged_duplicates += step.fusion.merged_duplicates;
     if (step.fusion.refused > 0 && summary.surfels_refused == step.fusion.refused) {
       warn("the model reached its maximum of " +
            std::to_string(model_->config().fusion.max_surfels) +
