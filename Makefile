@@ -27,6 +27,7 @@ demo: build
 
 bench: build
 	@bash bench/run_tracking_bench.sh
+	@bash bench/run_fusion_bench.sh
 
 clean:
 	rm -rf build devel install

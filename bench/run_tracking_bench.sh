@@ -25,9 +25,10 @@ for scenario in "${SCENARIOS[@]}"; do
       for levels in 3 2 1; do
         report=$OUT/${scenario}_${init}_s${step}_l${levels}.json
         echo "bench: $scenario --init $init --frame-step $step --levels $levels" >&2
-        # One core: the speed figures are single-threaded.
+        # One core: the speed figures are single-threaded. Frame-to-frame tracking alone (the
+        # tracking issue's pipeline); bench/run_fusion_bench.sh reruns it frame-to-model.
         taskset -c 0 rosrun vicc_fusion vicc_reconstruct "$bag" --init "$init" --frame-step "$step" \
-          --levels "$levels" --gt "$OUT/${scenario}_gt.tum" --report "$report" --quiet \
+          --levels "$levels" --gt "$OUT/${scenario}_gt.tum" --report "$report" --quiet --no-fusion \
           2>/dev/null || echo "bench: run failed: $report" >&2
       done
     done

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Glyph bench (issue 5): renders every vendored icon and the gallery's coloured DCIs at
+# 512 x 512 on one core and writes bench/glyphs/results.md: median render time (renderer
+# reused, first render excluded), multigrid levels and V-cycles, final residual and the mean
+# absolute error against a direct sparse solve of the same discrete problem.
+# Usage: bench/glyphs/run_glyph_bench.sh [path/to/vicc_glyph_bench]
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+bench="${1:-$root/devel/lib/vicc_glyphs/vicc_glyph_bench}"
+if [[ ! -x "$bench" ]]; then
+  echo "no vicc_glyph_bench at $bench: build the workspace (catkin_make) or pass its path" >&2
+  exit 1
+fi
+inputs=("$root"/src/vicc_glyphs/data/icons/*.svg "$root"/docs/glyph_gallery/*.xml)
+# One thread (the bench itself sets OpenCV and Eigen to one thread; no OpenMP/TBB helpers).
+# VICC_BENCH_CPU=N pins it to core N; by default the scheduler picks the least busy core,
+# which on a machine shared with other jobs gives steadier numbers than a fixed core.
+pin=()
+if [[ -n "${VICC_BENCH_CPU:-}" ]]; then pin=(taskset -c "$VICC_BENCH_CPU"); fi
+export OMP_NUM_THREADS=1 OPENCV_FOR_THREADS_NUM=1
+table="$("${pin[@]}" "$bench" --size 512 --repeats 31 "${inputs[@]}")"
+cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"
+{
+  echo "# Glyph bench results"
+  echo
+  echo "Produced by \`bench/glyphs/run_glyph_bench.sh\` on $(date -u +%Y-%m-%d) ($cpu, $(grep -c ^processor /proc/cpuinfo) cores"
+  echo "shared with other jobs; one thread). Release build, 512 x 512 RGB, default options"
+  echo "(FMG + 2 V(2,2)-cycles on the finest grid, anti-aliasing on; the blur pass runs only for"
+  echo "DCIs with blur points: heart_glow). Times are medians of 31 renders with a reused"
+  echo "\`DiffusionCurveRenderer\`; the first render of each input, which also pays for"
+  echo "first-touch page faults of its ~30 MB of buffers, is excluded. MAE is the mean absolute"
+  echo "difference (colours in 0..1) between the multigrid solution and Eigen's SimplicialLDLT"
+  echo "solve of the identical discrete problem (before anti-aliasing and blur). \"median ms\" is"
+  echo "wall time of the whole render (assembly of all levels, multigrid, anti-aliasing, blur),"
+  echo "\"median CPU ms\" the thread's CPU time for it (not counting other jobs on the core),"
+  echo "\"solve ms\" the multigrid part alone. On this shared machine the times depend on what"
+  echo "other jobs run at the same time: while it was busy, runs measured up to twice these (CPU"
+  echo "time too, as the virtual cores share caches)."
+  echo
+  echo "$table"
+} >"$here/results.md"
+cat "$here/results.md"

@@ -1,0 +1,120 @@
+// Glyph bench: for each input, the median time of rendering it at the bench size on one
+// thread (renderer reused, as in a long-running node), the multigrid's mean absolute error
+// against the direct sparse solve of the same discrete problem, and the V-cycle count.
+// Prints a Markdown table row per input.
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cstdlib>
+#include <ctime>
+#include <iomanip>
+#include <iostream>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "direct_reference_solve.hpp"
+#include "vicc_glyphs/io/load.hpp"
+#include "vicc_glyphs/render/renderer.hpp"
+
+namespace {
+
+using namespace vicc_glyphs;
+
+struct Measurement {
+  double median_ms = 0.0;
+  double median_cpu_ms = 0.0;
+  double median_solve_ms = 0.0;
+  double mae = 0.0;
+  int levels = 0;
+  int cycles = 0;
+  double final_residual = 0.0;
+  int curves = 0;
+};
+
+// CPU time of this thread: unlike wall time it does not count other processes sharing the
+// core (the bench machine is shared).
+double threadCpuMilliseconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return now.tv_sec * 1e3 + now.tv_nsec * 1e-6;
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+Measurement measure(const std::string& path, int size, int repeats) {
+  const DiffusionCurveImage image = loadDiffusionCurves(path, size);
+  Measurement m;
+  m.curves = static_cast<int>(image.curves.size());
+  DiffusionCurveRenderer renderer;
+  RenderResult result;
+  const RenderOptions options;
+  std::vector<double> totals, cpu, solves;
+  for (int k = 0; k < repeats + 1; ++k) {
+    const double cpu_start = threadCpuMilliseconds();
+    renderer.render(image, options, result);
+    if (k == 0) continue;  // the first render also pays for first-touch page faults
+    cpu.push_back(threadCpuMilliseconds() - cpu_start);
+    totals.push_back(result.report.timings.total_ms);
+    solves.push_back(result.report.timings.solve_ms);
+  }
+  m.median_ms = median(totals);
+  m.median_cpu_ms = median(cpu);
+  m.median_solve_ms = median(solves);
+  m.levels = result.report.multigrid.levels;
+  m.cycles = result.report.multigrid.fine_cycles;
+
+  // Accuracy and residual from separate runs, so they do not disturb the timing.
+  const std::vector<GridProblem> levels =
+      assembleColorLevels(image, options.background, options.multigrid.coarsest_size);
+  MultigridOptions recorded = options.multigrid;
+  recorded.record_residuals = true;
+  MultigridReport report;
+  const std::vector<float> multigrid = solveMultigrid(levels, recorded, &report);
+  m.mae = meanAbsoluteError(multigrid, solveDirect(levels.front()));
+  m.final_residual = report.residuals.empty() ? 0.0 : report.residuals.back();
+  return m;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::cerr << "usage: vicc_glyph_bench [--size N] [--repeats N] INPUT...\n";
+    return 2;
+  }
+  cv::setNumThreads(1);  // one core: no OpenCV worker threads
+  Eigen::setNbThreads(1);
+  int size = 512, repeats = 21;
+  std::vector<std::string> inputs;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if ((arg == "--size" || arg == "--repeats") && i + 1 < argc) {
+      (arg == "--size" ? size : repeats) = std::max(1, std::atoi(argv[++i]));
+    } else {
+      inputs.push_back(arg);
+    }
+  }
+  std::cout << "| input | curves | size | median ms | median CPU ms | solve ms | levels | "
+               "V-cycles | final rms residual | MAE vs direct |\n"
+               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  int failures = 0;
+  for (const std::string& input : inputs) {
+    const std::string name = input.substr(input.find_last_of('/') + 1);
+    try {
+      const Measurement m = measure(input, size, repeats);
+      std::cout << std::fixed << "| " << name << " | " << m.curves << " | " << size << " | "
+                << std::setprecision(2) << m.median_ms << " | " << m.median_cpu_ms << " | "
+                << m.median_solve_ms << " | " << m.levels << " | " << m.cycles << " | "
+                << std::scientific << std::setprecision(2) << m.final_residual << " | "
+                << std::fixed << std::setprecision(5) << m.mae << " |\n";
+    } catch (const std::exception& e) {
+      std::cerr << name << ": " << e.what() << "\n";
+      ++failures;
+    }
+  }
+  return failures ? 1 : 0;
+}

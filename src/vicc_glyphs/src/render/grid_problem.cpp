@@ -1,0 +1,190 @@
+#include "vicc_glyphs/render/grid_problem.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <limits>
+
+#include "vicc_glyphs/render/lattice_crossings.hpp"
+
+namespace vicc_glyphs {
+namespace {
+
+// Writes a side's constraint value at curve parameter s into `out` (one entry per channel);
+// returns false when that side adds no constraint (a barrier side).
+using SideSampler =
+    std::function<bool(const DiffusionCurve& curve, bool left_side, double s, double* out)>;
+
+void cutLink(GridProblem& problem, const GridPixel& a, const GridPixel& b) {
+  const GridPixel& first = (a.x < b.x || a.y < b.y) ? a : b;
+  if (first.x < 0 || first.y < 0) return;  // the link leaves the grid: there is none to cut
+  const int index = first.y * problem.width + first.x;
+  if (a.y == b.y) {
+    if (first.x + 1 < problem.width) problem.couples_right[index] = 0;
+  } else if (first.y + 1 < problem.height) {
+    problem.couples_down[index] = 0;
+  }
+}
+
+// Marks pixels reachable over links from an already reached one by a forward and a backward
+// raster pass; returns whether every pixel is reached (the usual case, so the exact search
+// below rarely runs).
+bool propagateByRasterPasses(const GridProblem& problem, std::vector<std::uint8_t>& reached) {
+  const int w = problem.width, h = problem.height;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const int p = y * w + x;
+      if (reached[p]) continue;
+      reached[p] = (x > 0 && problem.couples_right[p - 1] && reached[p - 1]) ||
+                   (y > 0 && problem.couples_down[p - w] && reached[p - w]);
+    }
+  }
+  bool all = true;
+  for (int y = h - 1; y >= 0; --y) {
+    for (int x = w - 1; x >= 0; --x) {
+      const int p = y * w + x;
+      if (!reached[p]) {
+        reached[p] = (problem.couples_right[p] && reached[p + 1]) ||
+                     (problem.couples_down[p] && reached[p + w]);
+      }
+      all = all && reached[p];
+    }
+  }
+  return all;
+}
+
+// Fixes every free pixel that links cannot connect to a Dirichlet pixel to `background`.
+void fixUnreachedPixels(GridProblem& problem, const std::vector<double>& background,
+                        std::vector<std::uint8_t>& reached, std::vector<int>& queue) {
+  const int w = problem.width;
+  const int n = problem.pixelCount();
+  reached.assign(problem.fixed.begin(), problem.fixed.end());
+  if (propagateByRasterPasses(problem, reached)) return;
+  queue.clear();
+  for (int p = 0; p < n; ++p) {
+    if (reached[p]) queue.push_back(p);
+  }
+  const auto visit = [&](int q) {
+    if (!reached[q]) {
+      reached[q] = 1;
+      queue.push_back(q);
+    }
+  };
+  for (size_t head = 0; head < queue.size(); ++head) {
+    const int p = queue[head];
+    if (problem.couples_right[p]) visit(p + 1);
+    if (problem.couples_down[p]) visit(p + w);
+    if (p % w > 0 && problem.couples_right[p - 1]) visit(p - 1);
+    if (p >= w && problem.couples_down[p - w]) visit(p - w);
+  }
+  for (int p = 0; p < n; ++p) {
+    if (reached[p]) continue;
+    problem.fixed[p] = 1;
+    for (int c = 0; c < problem.channels; ++c) {
+      problem.values[p * problem.channels + c] = static_cast<float>(background[c]);
+    }
+  }
+}
+
+void resetProblem(GridProblem& problem, int width, int height, int channels) {
+  problem.width = std::max(width, 0);
+  problem.height = std::max(height, 0);
+  problem.channels = channels;
+  const int n = problem.pixelCount();
+  problem.couples_right.assign(n, 1);
+  problem.couples_down.assign(n, 1);
+  for (int y = 0; y < problem.height; ++y) {
+    problem.couples_right[y * width + width - 1] = 0;  // Neumann border
+  }
+  for (int x = 0; x < problem.width; ++x) problem.couples_down[(height - 1) * width + x] = 0;
+  problem.fixed.assign(n, 0);
+  problem.values.assign(static_cast<size_t>(channels) * n, 0.0f);
+}
+
+void assembleGridProblem(const DiffusionCurveImage& image, double scale, const SideSampler& sample,
+                         const std::vector<double>& background, GridProblem& problem,
+                         std::vector<int>& counts, std::vector<float>& nearest,
+                         std::vector<std::uint8_t>& reached, std::vector<int>& queue) {
+  const int n = problem.pixelCount();
+  const int width = problem.width, height = problem.height, channels = problem.channels;
+  if (n == 0) return;
+  // A pixel takes its value from the nearest curve crossing on its links (equally near ones
+  // are averaged: sums accumulate in `values`, divided by the counts afterwards). Averaging
+  // all crossings instead would mix both sides' colours where a thin wedge of one side ends
+  // between two pixel centres of the other (every sharp corner of an icon).
+  constexpr float kSameDistance = 1e-4f;
+  counts.assign(n, 0);
+  nearest.assign(n, std::numeric_limits<float>::infinity());
+  std::vector<double> sample_value(channels);
+  const auto constrain = [&](const DiffusionCurve& curve, bool left_side, double s,
+                             const GridPixel& pixel, double distance) {
+    if (pixel.x < 0 || pixel.y < 0 || pixel.x >= width || pixel.y >= height) return;
+    const int p = pixel.y * width + pixel.x;
+    const float d = static_cast<float>(distance);
+    if (d > nearest[p] + kSameDistance) return;
+    if (!sample(curve, left_side, s, sample_value.data())) return;
+    if (d < nearest[p] - kSameDistance) {
+      counts[p] = 0;
+      std::fill_n(problem.values.begin() + static_cast<long>(p) * channels, channels, 0.0f);
+      nearest[p] = d;
+    }
+    ++counts[p];
+    for (int c = 0; c < channels; ++c) {
+      problem.values[p * channels + c] += static_cast<float>(sample_value[c]);
+    }
+  };
+  forEachLatticeCrossing(image, scale, width, height, [&](const LatticeCrossing& crossing) {
+    const DiffusionCurve& curve = image.curves[crossing.curve];
+    cutLink(problem, crossing.left_pixel, crossing.right_pixel);
+    constrain(curve, true, crossing.position, crossing.left_pixel, crossing.left_distance);
+    constrain(curve, false, crossing.position, crossing.right_pixel, crossing.right_distance);
+  });
+  for (int p = 0; p < n; ++p) {
+    if (counts[p] == 0) continue;
+    problem.fixed[p] = 1;
+    const float share = 1.0f / static_cast<float>(counts[p]);
+    for (int c = 0; c < channels; ++c) problem.values[p * channels + c] *= share;
+  }
+  fixUnreachedPixels(problem, background, reached, queue);
+}
+
+}  // namespace
+
+void GridAssembler::assembleColor(const DiffusionCurveImage& image, int width, int height,
+                                  double scale, const Color& background, GridProblem& problem) {
+  const SideSampler sample = [](const DiffusionCurve& curve, bool left_side, double s,
+                                double* out) {
+    if (!(left_side ? curve.left_emits : curve.right_emits)) return false;
+    const Color color = left_side ? curve.leftColorAt(s) : curve.rightColorAt(s);
+    for (int c = 0; c < 3; ++c) out[c] = color[c];
+    return true;
+  };
+  resetProblem(problem, width, height, 3);
+  assembleGridProblem(image, scale, sample, {background[0], background[1], background[2]}, problem,
+                      counts_, nearest_, reached_, queue_);
+}
+
+void GridAssembler::assembleBlur(const DiffusionCurveImage& image, int width, int height,
+                                 double scale, GridProblem& problem) {
+  const SideSampler sample = [scale](const DiffusionCurve& curve, bool, double s, double* out) {
+    out[0] = scale * curve.blurAt(s);
+    return true;
+  };
+  resetProblem(problem, width, height, 1);
+  assembleGridProblem(image, scale, sample, {0.0}, problem, counts_, nearest_, reached_, queue_);
+}
+
+GridProblem assembleColorProblem(const DiffusionCurveImage& image, int width, int height,
+                                 double scale, const Color& background) {
+  GridProblem problem;
+  GridAssembler().assembleColor(image, width, height, scale, background, problem);
+  return problem;
+}
+
+GridProblem assembleBlurProblem(const DiffusionCurveImage& image, int width, int height,
+                                double scale) {
+  GridProblem problem;
+  GridAssembler().assembleBlur(image, width, height, scale, problem);
+  return problem;
+}
+
+}  // namespace vicc_glyphs

@@ -1,0 +1,188 @@
+#include "vicc_glyphs/render/lattice_crossings.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vicc_glyphs {
+namespace {
+
+// Flattening tolerance (grid pixels) and the longest straight piece: short pieces keep the
+// curve parameter, which is interpolated linearly along a piece, close to the true one.
+constexpr double kFlatnessTolerance = 0.02;
+constexpr double kMaxPieceLength = 2.0;
+constexpr int kMaxPiecesPerSegment = 4096;
+
+struct CurveSample {
+  Point2 point;
+  double position;
+};
+
+class CrossingCollector {
+ public:
+  CrossingCollector(int curve, int width, int height,
+                    const std::function<void(const LatticeCrossing&)>& visit)
+      : curve_(curve), width_(width), height_(height), visit_(visit) {}
+
+  // Reports the crossings of the straight piece a -> b with the lines through pixel centres.
+  void addPiece(const CurveSample& a, const CurveSample& b) const {
+    const Point2 d = b.point - a.point;
+    const double length = d.norm();
+    if (!(length > 1e-12)) return;
+    const Point2 normal(d.y() / length, -d.x() / length);  // left normal, y-down frame
+    const double footprint = 0.5 * (std::abs(normal.x()) + std::abs(normal.y()));
+
+    // Rows: the line y = j + 0.5 carries the links (i, j) - (i + 1, j). Half-open ranges make
+    // a curve passing through a piece end count once.
+    const auto [row_begin, row_end] = lineRange(a.point.y(), b.point.y(), height_);
+    for (int j = row_begin; j < row_end; ++j) {
+      const double t = (j + 0.5 - a.point.y()) / d.y();
+      const double x = a.point.x() + t * d.x();
+      const int i = static_cast<int>(std::floor(x - 0.5));
+      report(a, b, t, {i, j}, {i + 1, j}, normal, footprint);
+    }
+    // Columns: the line x = i + 0.5 carries the links (i, j) - (i, j + 1).
+    const auto [column_begin, column_end] = lineRange(a.point.x(), b.point.x(), width_);
+    for (int i = column_begin; i < column_end; ++i) {
+      const double t = (i + 0.5 - a.point.x()) / d.x();
+      const double y = a.point.y() + t * d.y();
+      const int j = static_cast<int>(std::floor(y - 0.5));
+      report(a, b, t, {i, j}, {i, j + 1}, normal, footprint);
+    }
+  }
+
+ private:
+  // Indices k in [0, count) with min(u, v) <= k + 0.5 < max(u, v).
+  static std::pair<int, int> lineRange(double u, double v, int count) {
+    const double low = std::min(u, v) - 0.5;
+    const double high = std::max(u, v) - 0.5;
+    const double begin = std::clamp(std::ceil(low), 0.0, static_cast<double>(count));
+    const double end = std::clamp(std::ceil(high), 0.0, static_cast<double>(count));
+    return {static_cast<int>(begin), static_cast<int>(end)};
+  }
+
+  bool inside(const GridPixel& p) const {
+    return p.x >= 0 && p.y >= 0 && p.x < width_ && p.y < height_;
+  }
+
+  void report(const CurveSample& a, const CurveSample& b, double t, GridPixel first,
+              GridPixel second, const Point2& normal, double footprint) const {
+    if (!inside(first) && !inside(second)) return;
+    const Point2 at = a.point + t * (b.point - a.point);
+    const double first_side = (Point2(first.x + 0.5, first.y + 0.5) - at).dot(normal);
+    const double second_side = (Point2(second.x + 0.5, second.y + 0.5) - at).dot(normal);
+    LatticeCrossing crossing;
+    crossing.curve = curve_;
+    crossing.position = a.position + t * (b.position - a.position);
+    crossing.footprint = footprint;
+    const bool first_is_left = first_side > second_side;
+    crossing.left_pixel = first_is_left ? first : second;
+    crossing.right_pixel = first_is_left ? second : first;
+    crossing.left_distance = std::abs(first_is_left ? first_side : second_side);
+    crossing.right_distance = std::abs(first_is_left ? second_side : first_side);
+    visit_(crossing);
+  }
+
+  int curve_;
+  int width_;
+  int height_;
+  const std::function<void(const LatticeCrossing&)>& visit_;
+};
+
+int pieceCount(const Point2* b) {
+  const double bend =
+      std::max((b[0] - 2.0 * b[1] + b[2]).norm(), (b[1] - 2.0 * b[2] + b[3]).norm());
+  const double polygon = (b[1] - b[0]).norm() + (b[2] - b[1]).norm() + (b[3] - b[2]).norm();
+  // A cubic flattened into n uniform pieces deviates at most 0.75 * bend / n^2.
+  const double by_flatness = std::sqrt(0.75 * bend / kFlatnessTolerance);
+  const double by_length = polygon / kMaxPieceLength;
+  const double pieces = std::ceil(std::max({1.0, by_flatness, by_length}));
+  return static_cast<int>(std::min(pieces, static_cast<double>(kMaxPiecesPerSegment)));
+}
+
+bool outsideGrid(const Point2* b, int width, int height) {
+  double min_x = b[0].x(), max_x = b[0].x(), min_y = b[0].y(), max_y = b[0].y();
+  for (int k = 1; k < 4; ++k) {
+    min_x = std::min(min_x, b[k].x());
+    max_x = std::max(max_x, b[k].x());
+    min_y = std::min(min_y, b[k].y());
+    max_y = std::max(max_y, b[k].y());
+  }
+  // The convex hull of the control points contains the segment; one pixel of margin keeps
+  // the links of border pixels whose partner lies just outside.
+  return max_x < -1.0 || max_y < -1.0 || min_x > width + 1.0 || min_y > height + 1.0;
+}
+
+// Sample points are snapped to 1/1024 grid pixel: a curve meant to run exactly along a line of
+// pixel centres (common for axis-aligned icon edges) otherwise wobbles across it by rounding
+// errors and cuts links on both sides at random.
+Point2 snapped(const Point2& p) {
+  constexpr double kSnap = 1024.0;
+  return Point2(std::round(p.x() * kSnap) / kSnap, std::round(p.y() * kSnap) / kSnap);
+}
+
+Point2 bezier(const Point2* b, double t) {
+  const double u = 1.0 - t;
+  return snapped(u * u * u * b[0] + 3.0 * u * u * t * b[1] + 3.0 * u * t * t * b[2] +
+                 t * t * t * b[3]);
+}
+
+// A curve that ends outside the image is meant to leave it. On a coarse grid the last pixel
+// row or column reaches further past the image border than on the fine grid, so such an end
+// could stop short of the last line of pixel centres and let the two sides mix around it;
+// extending it straight on by a few grid pixels keeps the levels' geometry alike.
+void extendEndsLeavingTheImage(const DiffusionCurve& curve, const DiffusionCurveImage& image,
+                               double scale, const CrossingCollector& collector) {
+  const int segments = curve.segmentCount();
+  constexpr double kExtension = 2.0;  // grid pixels
+  const auto outside = [&](const Point2& p) {
+    return p.x() < 0.0 || p.y() < 0.0 || p.x() > image.width || p.y() > image.height;
+  };
+  for (const bool at_start : {true, false}) {
+    const double s = at_start ? 0.0 : segments;
+    const Point2 end = curve.pointAt(s);
+    if (!end.allFinite() || !outside(end)) continue;
+    Point2 direction = curve.derivativeAt(s) * (at_start ? -1.0 : 1.0);
+    if (!(direction.norm() > 1e-12)) {
+      direction = at_start ? curve.control_points.front() - curve.control_points.back()
+                           : curve.control_points.back() - curve.control_points.front();
+    }
+    if (!(direction.norm() > 1e-12) || !direction.allFinite()) continue;
+    const CurveSample from{snapped(scale * end), s};
+    const CurveSample to{scale * end + kExtension * direction.normalized(), s};
+    if (at_start) {
+      collector.addPiece(to, from);
+    } else {
+      collector.addPiece(from, to);
+    }
+  }
+}
+
+}  // namespace
+
+void forEachLatticeCrossing(const DiffusionCurveImage& image, double scale, int width, int height,
+                            const std::function<void(const LatticeCrossing&)>& visit) {
+  for (size_t c = 0; c < image.curves.size(); ++c) {
+    const DiffusionCurve& curve = image.curves[c];
+    const int segments = curve.segmentCount();
+    const CrossingCollector collector(static_cast<int>(c), width, height, visit);
+    for (int k = 0; k < segments; ++k) {
+      Point2 b[4];
+      for (int m = 0; m < 4; ++m) b[m] = scale * curve.control_points[3 * k + m];
+      if (!b[0].allFinite() || !b[1].allFinite() || !b[2].allFinite() || !b[3].allFinite()) {
+        continue;
+      }
+      if (outsideGrid(b, width, height)) continue;
+      const int pieces = pieceCount(b);
+      CurveSample previous{snapped(b[0]), static_cast<double>(k)};
+      for (int p = 1; p <= pieces; ++p) {
+        const double t = static_cast<double>(p) / pieces;
+        const CurveSample next{bezier(b, t), k + t};
+        collector.addPiece(previous, next);
+        previous = next;
+      }
+    }
+    if (segments > 0) extendEndsLeavingTheImage(curve, image, scale, collector);
+  }
+}
+
+}  // namespace vicc_glyphs

@@ -1,0 +1,347 @@
+#include "vicc_glyphs/render/multigrid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <type_traits>
+
+#include "multigrid_levels.hpp"
+
+namespace vicc_glyphs {
+namespace multigrid_detail {
+namespace {
+
+// A pixel's values. Colour is stored as four floats (the fourth always zero) in a GCC/Clang
+// vector type, so that every per-pixel operation is one 4-wide SIMD instruction; a single
+// channel (the blur field) is a plain float.
+typedef float Float4 __attribute__((vector_size(16)));
+
+template <int C>
+using PixelValue = std::conditional_t<C == 3, Float4, float>;
+
+template <int C>
+class Multigrid {
+  using Px = PixelValue<C>;
+  using Field = std::vector<Px>;
+
+ public:
+  // Sets up the levels for `problems`, reusing the memory of the previous solve.
+  void prepare(const std::vector<GridProblem>& problems, const MultigridOptions& options) {
+    problems_ = &problems;
+    options_ = options;
+    const size_t count = problems.size();
+    levels_.resize(count);
+    u_.resize(count);
+    f_.resize(count);
+    // Fields are zeroed only when (re)allocated: their ghost borders must stay 0, and every
+    // interior value is written before it is read.
+    const auto reserve = [](Field& field, size_t size) {
+      if (field.size() != size) field.assign(size, Px{});
+    };
+    for (size_t l = 0; l < count; ++l) {
+      makeLevel(problems[l], levels_[l]);
+      const size_t size = levels_[l].size;
+      reserve(u_[l], size);
+      reserve(f_[l], l > 0 ? size : 0);  // the finest level has no right-hand side
+    }
+    for (size_t l = 0; l + 1 < levels_.size(); ++l) {
+      Level& fine = levels_[l];
+      const Level& coarse = levels_[l + 1];
+      prolongationTable(fine.width, coarse.width, fine.coarse_x, fine.coarse_x_neighbour);
+      prolongationTable(fine.height, coarse.height, fine.coarse_y, fine.coarse_y_neighbour);
+      prolongationSources(fine, coarse);
+    }
+  }
+
+  void solve(std::vector<float>& values, MultigridReport* report) {
+    const int coarsest = static_cast<int>(levels_.size()) - 1;
+    std::vector<double> residuals;
+    setDirichletValues(coarsest);
+    smooth(coarsest, u_[coarsest].data(), nullptr, options_.coarsest_sweeps);
+    for (int l = coarsest - 1; l >= 0; --l) {
+      setDirichletValues(l);
+      prolong<false>(l, u_[l + 1].data(), u_[l].data());
+      const int cycles = l == 0 ? options_.fine_cycles : options_.intermediate_cycles;
+      if (l == 0 && options_.record_residuals) residuals.push_back(residualNorm(0));
+      for (int k = 0; k < cycles; ++k) {
+        vcycle(l, u_[l].data(), nullptr);
+        if (l == 0 && options_.record_residuals) residuals.push_back(residualNorm(0));
+      }
+    }
+    if (coarsest == 0 && options_.record_residuals) residuals.push_back(residualNorm(0));
+    if (report) {
+      report->levels = static_cast<int>(levels_.size());
+      report->fine_cycles = coarsest == 0 ? 0 : options_.fine_cycles;
+      report->residuals = residuals;
+    }
+    finestValues(values);
+  }
+
+ private:
+  static float channel(const Px& value, int c) {
+    if constexpr (C == 3) {
+      return value[c];
+    } else {
+      return value;
+    }
+  }
+
+  static void setChannel(Px& value, int c, float x) {
+    if constexpr (C == 3) {
+      value[c] = x;
+    } else {
+      value = x;
+    }
+  }
+
+  // Initialises level l for FMG: Dirichlet values, and 0 at the free pixels of the coarsest
+  // level (finer levels get theirs by interpolation right after).
+  void setDirichletValues(int l) {
+    const GridProblem& problem = (*problems_)[l];
+    const Level& level = levels_[l];
+    const bool coarsest = l + 1 == static_cast<int>(levels_.size());
+    for (int y = 0; y < level.height; ++y) {
+      for (int x = 0; x < level.width; ++x) {
+        const int q = y * level.width + x;
+        Px& value = u_[l][level.index(x, y)];
+        if (problem.fixed[q]) {
+          for (int c = 0; c < C; ++c) setChannel(value, c, problem.values[q * C + c]);
+        } else if (coarsest) {
+          value = Px{};
+        }
+      }
+    }
+  }
+
+  void vcycle(int l, Px* u, const Px* f) {
+    const int coarsest = static_cast<int>(levels_.size()) - 1;
+    if (l == coarsest) {
+      smooth(l, u, f, options_.coarsest_sweeps);
+      return;
+    }
+    smooth(l, u, f, options_.pre_smoothing);
+    restrictResidual(l, u, f, f_[l + 1].data());
+    std::fill(u_[l + 1].begin(), u_[l + 1].end(), Px{});
+    vcycle(l + 1, u_[l + 1].data(), f_[l + 1].data());
+    prolong<true>(l, u_[l + 1].data(), u);
+    smooth(l, u, f, options_.post_smoothing);
+  }
+
+  // Red-black Gauss-Seidel on the free pixels: u_p = (f_p + sum w u_q) / sum w. The black
+  // half-sweep trails the red one by a row, so one pass over memory does a full sweep.
+  void smooth(int l, Px* u, const Px* f, int sweeps) const {
+    const Level& level = levels_[l];
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
+      for (int y = 0; y <= level.height; ++y) {
+        if (f) {
+          if (y < level.height) relaxRow<true>(level, u, f, y, y & 1);
+          if (y > 0) relaxRow<true>(level, u, f, y - 1, y & 1);
+        } else {
+          if (y < level.height) relaxRow<false>(level, u, f, y, y & 1);
+          if (y > 0) relaxRow<false>(level, u, f, y - 1, y & 1);
+        }
+      }
+    }
+  }
+
+  // Relaxes the pixels x = first_x, first_x + 2, ... of row y.
+  template <bool kHasRhs>
+  static void relaxRow(const Level& level, Px* __restrict u, const Px* __restrict f, int y,
+                       int first_x) {
+    const int s = level.stride;
+    const std::uint8_t* __restrict mask = level.mask.data();
+    for (int p = level.index(first_x, y), end = level.index(level.width, y); p < end; p += 2) {
+      const std::uint8_t m = mask[p];
+      if (m == kAllLinks) {  // the common case: an interior pixel away from curves
+        Px sum = u[p - 1] + u[p + 1] + u[p - s] + u[p + s];
+        if constexpr (kHasRhs) sum += f[p];
+        u[p] = sum * 0.25f;
+      } else if (!(m & kFixed)) {
+        const LinkWeights& w = kWeights[m];
+        Px sum = w.left * u[p - 1] + w.right * u[p + 1] + w.up * u[p - s] + w.down * u[p + s];
+        if constexpr (kHasRhs) sum += f[p];
+        u[p] = sum * w.inv_degree;
+      }
+    }
+  }
+
+  // The residual f - A u at pixel p: 0 at Dirichlet pixels and in the ghost border.
+  static Px residualAt(const Level& level, const Px* __restrict u, const Px* __restrict f, int p) {
+    const int s = level.stride;
+    const std::uint8_t m = level.mask[p];
+    Px r;
+    if (m == kAllLinks) {
+      r = u[p - 1] + u[p + 1] + u[p - s] + u[p + s] - 4.0f * u[p];
+    } else if (m & kFixed) {
+      return Px{};
+    } else {
+      const LinkWeights& w = kWeights[m];
+      r = w.left * (u[p - 1] - u[p]) + w.right * (u[p + 1] - u[p]) + w.up * (u[p - s] - u[p]) +
+          w.down * (u[p + s] - u[p]);
+    }
+    return f ? r + f[p] : r;
+  }
+
+  double residualNorm(int l) const {
+    const Level& level = levels_[l];
+    size_t free = 0;
+    double squares = 0.0;
+    for (int y = 0; y < level.height; ++y) {
+      for (int x = 0; x < level.width; ++x) {
+        const int p = level.index(x, y);
+        free += !(level.mask[p] & kFixed);
+        const Px r = residualAt(level, u_[l].data(), nullptr, p);
+        for (int c = 0; c < C; ++c) {
+          const double value = channel(r, c);
+          squares += value * value;
+        }
+      }
+    }
+    return free ? std::sqrt(squares / (static_cast<double>(free) * C)) : 0.0;
+  }
+
+  // Computes the residual of level l and restricts it to level l + 1 in one pass. The
+  // unscaled coarse Laplacian is 4x the fine one, so the coarse right-hand side is the sum
+  // (not the mean) of the four children's residuals; a grid side of 1 pixel is not coarsened
+  // and contributes no child, so its factor 2 is applied explicitly. Children beyond an odd
+  // border fall into the ghost border, whose residual is 0. Residuals of free pixels in
+  // Dirichlet coarse cells are redirected (see prolongationSources).
+  void restrictResidual(int l, const Px* __restrict u, const Px* __restrict f,
+                        Px* __restrict fc) const {
+    const Level& fine = levels_[l];
+    const Level& coarse = levels_[l + 1];
+    const int s = fine.stride;
+    const float scale = (fine.width == 1 ? 2.0f : 1.0f) * (fine.height == 1 ? 2.0f : 1.0f);
+    for (int y = 0; y < coarse.height; ++y) {
+      for (int x = 0; x < coarse.width; ++x) {
+        const int p = fine.index(2 * x, 2 * y);
+        fc[coarse.index(x, y)] =
+            scale * (residualAt(fine, u, f, p) + residualAt(fine, u, f, p + 1) +
+                     residualAt(fine, u, f, p + s) + residualAt(fine, u, f, p + s + 1));
+      }
+    }
+    for (const Level::Redirect& redirect : fine.residual_redirects) {
+      fc[redirect.coarse] += scale * redirect.weight * residualAt(fine, u, f, redirect.fine);
+    }
+  }
+
+  // Bilinear interpolation of the coarse field to the fine free pixels: added as a
+  // correction (V-cycle) or assigned as the initial guess (FMG), with the sources each pixel
+  // may use (see prolongationSources). kProlongation entries with no source are all zero.
+  template <bool kAdd>
+  void prolong(int l, const Px* __restrict coarse_values, Px* __restrict u) const {
+    const Level& fine = levels_[l];
+    const Level& coarse = levels_[l + 1];
+    const std::uint8_t* all_sources =
+        kAdd ? fine.correction_sources.data() : fine.solution_sources.data();
+    for (int y = 0; y < fine.height; ++y) {
+      const int cy = fine.coarse_y[y], ny = fine.coarse_y_neighbour[y];
+      const int p0 = fine.index(0, y);
+      for (int x = 0; x < fine.width; ++x) {
+        const std::uint8_t sources = all_sources[p0 + x];
+        if (sources == kNoSources) continue;
+        const int cx = fine.coarse_x[x], nx = fine.coarse_x_neighbour[x];
+        const ProlongationWeights& w = kProlongation[sources];
+        const Px value = w.near * coarse_values[coarse.index(cx, cy)] +
+                         w.x * coarse_values[coarse.index(nx, cy)] +
+                         w.y * coarse_values[coarse.index(cx, ny)] +
+                         w.xy * coarse_values[coarse.index(nx, ny)];
+        if constexpr (kAdd) {
+          u[p0 + x] += value;
+        } else {
+          u[p0 + x] = value;
+        }
+      }
+    }
+  }
+
+  void finestValues(std::vector<float>& values) const {
+    const Level& level = levels_[0];
+    values.resize(static_cast<size_t>(C) * level.width * level.height);
+    float* out = values.data();
+    for (int y = 0; y < level.height; ++y) {
+      for (int x = 0; x < level.width; ++x) {
+        const Px& value = u_[0][level.index(x, y)];
+        for (int c = 0; c < C; ++c) *out++ = channel(value, c);
+      }
+    }
+  }
+
+  const std::vector<GridProblem>* problems_ = nullptr;
+  MultigridOptions options_;
+  std::vector<Level> levels_;
+  std::vector<Field> u_, f_;
+};
+
+}  // namespace
+}  // namespace multigrid_detail
+
+std::vector<std::pair<int, int>> levelSizes(int width, int height, int coarsest_size) {
+  std::vector<std::pair<int, int>> sizes{{width, height}};
+  const int target = std::max(coarsest_size, 1);
+  while (std::max(width, height) > target) {
+    width = (width + 1) / 2;
+    height = (height + 1) / 2;
+    sizes.emplace_back(width, height);
+  }
+  return sizes;
+}
+
+void assembleLevels(
+    int width, int height, int coarsest_size,
+    const std::function<void(int width, int height, double scale, GridProblem& level)>& assemble,
+    std::vector<GridProblem>& levels) {
+  const std::vector<std::pair<int, int>> sizes = levelSizes(width, height, coarsest_size);
+  levels.resize(sizes.size());
+  double scale = 1.0;
+  for (size_t l = 0; l < sizes.size(); ++l) {
+    assemble(sizes[l].first, sizes[l].second, scale, levels[l]);
+    scale *= 0.5;
+  }
+}
+
+struct MultigridSolver::Workspaces {
+  multigrid_detail::Multigrid<3> color;
+  multigrid_detail::Multigrid<1> single;
+};
+
+MultigridSolver::MultigridSolver() : workspaces_(std::make_unique<Workspaces>()) {}
+MultigridSolver::~MultigridSolver() = default;
+
+void MultigridSolver::solve(const std::vector<GridProblem>& levels, const MultigridOptions& options,
+                            std::vector<float>& values, MultigridReport* report) {
+  if (levels.empty()) throw std::invalid_argument("solveMultigrid: no levels");
+  const int channels = levels.front().channels;
+  for (size_t l = 0; l < levels.size(); ++l) {
+    const GridProblem& level = levels[l];
+    if (level.channels != channels || level.width <= 0 || level.height <= 0) {
+      throw std::invalid_argument("solveMultigrid: level " + std::to_string(l) +
+                                  " is empty or has a different channel count");
+    }
+    if (l > 0 && (level.width != (levels[l - 1].width + 1) / 2 ||
+                  level.height != (levels[l - 1].height + 1) / 2)) {
+      throw std::invalid_argument("solveMultigrid: level " + std::to_string(l) +
+                                  " is not half the size of the level above");
+    }
+  }
+  if (channels == 3) {
+    workspaces_->color.prepare(levels, options);
+    workspaces_->color.solve(values, report);
+  } else if (channels == 1) {
+    workspaces_->single.prepare(levels, options);
+    workspaces_->single.solve(values, report);
+  } else {
+    throw std::invalid_argument("solveMultigrid: only 1 or 3 channels are supported");
+  }
+}
+
+std::vector<float> solveMultigrid(const std::vector<GridProblem>& levels,
+                                  const MultigridOptions& options, MultigridReport* report) {
+  std::vector<float> values;
+  MultigridSolver().solve(levels, options, values, report);
+  return values;
+}
+
+}  // namespace vicc_glyphs

@@ -1,0 +1,101 @@
+#include "render_command.hpp"
+
+#include <iomanip>
+
+#include "command_line.hpp"
+#include "vicc_glyphs/io/load.hpp"
+#include "vicc_glyphs/io/orzan_xml.hpp"
+#include "vicc_glyphs/render/png_output.hpp"
+#include "vicc_glyphs/render/renderer.hpp"
+
+namespace vicc_glyphs::tools {
+namespace {
+
+constexpr int kMaxSize = 16384;
+
+const std::vector<OptionSpec>& renderOptions() {
+  static const std::vector<OptionSpec> specs{
+      {"out", "OUT.png", "PNG to write (required)"},
+      {"size", "N", "output width in pixels (default: the input's own width)"},
+      {"dci", "OUT.xml", "also write the loaded (and scaled) DCI as Orzan XML"},
+      {"cycles", "N", "multigrid V-cycles on the finest grid (default 2)"},
+      {"report", "", "print timings, multigrid levels and residuals"},
+      {"help", "", "show this help"},
+  };
+  return specs;
+}
+
+void printUsage(std::ostream& out) {
+  out << "usage: vicc_glyph render INPUT.(svg|xml|png) --out OUT.png [--size N] [--dci OUT.xml]\n"
+         "                        [--cycles N] [--report]\n\n"
+         "Renders a diffusion curve image (Orzan XML), an SVG icon or a PNG (traced) to PNG.\n\n"
+      << formatOptions(renderOptions());
+}
+
+void printReport(const RenderResult& result, std::ostream& out) {
+  const RenderReport& report = result.report;
+  const RenderTimings& t = report.timings;
+  out << std::fixed << std::setprecision(2) << "size: " << result.image.cols << "x"
+      << result.image.rows << "\n"
+      << "time ms: total " << t.total_ms << ", assemble " << t.assemble_ms << ", solve "
+      << t.solve_ms << ", antialias " << t.antialias_ms << ", blur " << t.blur_ms << "\n"
+      << "multigrid: " << report.multigrid.levels << " levels, " << report.multigrid.fine_cycles
+      << " V-cycles on the finest grid\n"
+      << std::scientific << std::setprecision(3);
+  const std::vector<double>& residuals = report.multigrid.residuals;
+  for (size_t k = 0; k < residuals.size(); ++k) {
+    out << "  rms residual " << (k == 0 ? "after FMG  " : "after cycle " + std::to_string(k))
+        << ": " << residuals[k] << "\n";
+  }
+  out << std::defaultfloat;
+}
+
+}  // namespace
+
+int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  RenderOptions options;
+  std::string input, output, dci;
+  int size = 0;
+  bool report = false;
+  try {
+    const ParsedArguments parsed = parseArguments(args, renderOptions());
+    if (parsed.has("help")) {
+      printUsage(out);
+      return 0;
+    }
+    if (parsed.positional.size() != 1) {
+      throw UsageError(parsed.positional.empty() ? "missing INPUT file"
+                                                 : "expected one INPUT file, got " +
+                                                       std::to_string(parsed.positional.size()));
+    }
+    input = parsed.positional.front();
+    output = parsed.value("out");
+    if (output.empty()) throw UsageError("missing --out OUT.png");
+    if (parsed.has("size")) size = parseInteger("size", parsed.value("size"), 1, kMaxSize);
+    if (parsed.has("cycles")) {
+      options.multigrid.fine_cycles = parseInteger("cycles", parsed.value("cycles"), 0, 100);
+    }
+    dci = parsed.value("dci");
+    report = parsed.has("report");
+  } catch (const UsageError& e) {
+    err << "vicc_glyph render: " << e.what() << "\n\n";
+    printUsage(err);
+    return 2;
+  }
+  options.multigrid.record_residuals = report;
+
+  try {
+    const DiffusionCurveImage image = loadDiffusionCurves(input, size);
+    if (!dci.empty()) writeOrzanXml(image, dci);
+    RenderResult result;
+    DiffusionCurveRenderer().render(image, options, result);
+    writePng(result.image, output);
+    if (report) printReport(result, out);
+  } catch (const std::exception& e) {
+    err << "vicc_glyph render: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace vicc_glyphs::tools

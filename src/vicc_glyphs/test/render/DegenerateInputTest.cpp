@@ -1,0 +1,70 @@
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "sample_images.hpp"
+#include "vicc_glyphs/render/renderer.hpp"
+
+namespace vicc_glyphs {
+namespace {
+
+void expectUniform(const cv::Mat& image, const Color& color) {
+  ASSERT_FALSE(image.empty());
+  cv::Mat difference;
+  cv::absdiff(image, cv::Scalar(color[0], color[1], color[2]), difference);
+  double largest = 0.0;
+  cv::minMaxLoc(difference.reshape(1), nullptr, &largest);
+  EXPECT_LT(largest, 1e-6);
+}
+
+RenderOptions withBackground(const Color& background) {
+  RenderOptions options;
+  options.background = background;
+  return options;
+}
+
+TEST(DegenerateInputTest, ImageWithoutPixelsGivesEmptyResult) {
+  const RenderResult result = renderDiffusionCurves(DiffusionCurveImage{});
+  EXPECT_TRUE(result.image.empty());
+  EXPECT_TRUE(result.diffused.empty());
+}
+
+TEST(DegenerateInputTest, ImageWithoutCurvesIsTheBackground) {
+  const Color background(0.2, 0.3, 0.4);
+  expectUniform(renderDiffusionCurves({32, 24, {}}, withBackground(background)).image, background);
+}
+
+TEST(DegenerateInputTest, ZeroLengthCurveIsIgnored) {
+  DiffusionCurveImage image{32, 32, {}};
+  image.curves.push_back(lineCurve({16, 16}, {16, 16}, Color(1, 0, 0), Color(0, 0, 1)));
+  expectUniform(renderDiffusionCurves(image).image, Color::Zero());
+}
+
+TEST(DegenerateInputTest, CurveOutsideTheImageIsIgnored) {
+  DiffusionCurveImage image{32, 32, {}};
+  image.curves.push_back(circleCurve({200, -300}, 20, Color(1, 0, 0), Color(0, 0, 1)));
+  expectUniform(renderDiffusionCurves(image, withBackground(Color(1, 1, 1))).image, Color(1, 1, 1));
+}
+
+TEST(DegenerateInputTest, MalformedCurvesAreIgnored) {
+  DiffusionCurveImage image{16, 16, {}};
+  DiffusionCurve two_points;
+  two_points.control_points = {{0, 0}, {16, 16}};
+  image.curves.push_back(two_points);
+  DiffusionCurve not_finite = lineCurve({0, 8}, {16, 8}, Color(1, 0, 0), Color(0, 0, 1));
+  not_finite.control_points[1].x() = std::numeric_limits<double>::quiet_NaN();
+  image.curves.push_back(not_finite);
+  expectUniform(renderDiffusionCurves(image).image, Color::Zero());
+}
+
+TEST(DegenerateInputTest, TinyImagesRender) {
+  for (const auto& [w, h] :
+       {std::pair{1, 1}, std::pair{1, 7}, std::pair{3, 2}, std::pair{600, 1}}) {
+    const RenderResult result = renderDiffusionCurves(twoColourLineImage(w, h));
+    EXPECT_EQ(result.image.size(), cv::Size(w, h));
+    EXPECT_TRUE(cv::checkRange(result.image));
+  }
+}
+
+}  // namespace
+}  // namespace vicc_glyphs

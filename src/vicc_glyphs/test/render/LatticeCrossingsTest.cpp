@@ -1,0 +1,77 @@
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "sample_images.hpp"
+#include "vicc_glyphs/render/lattice_crossings.hpp"
+
+namespace vicc_glyphs {
+namespace {
+
+std::vector<LatticeCrossing> crossingsOf(const DiffusionCurveImage& image, double scale = 1.0) {
+  std::vector<LatticeCrossing> found;
+  forEachLatticeCrossing(image, scale, image.width, image.height,
+                         [&](const LatticeCrossing& c) { found.push_back(c); });
+  return found;
+}
+
+TEST(LatticeCrossingsTest, RightwardLineHasItsLeftSideAbove) {
+  DiffusionCurveImage image{20, 20, {}};
+  image.curves.push_back(lineCurve({0, 10.2}, {20, 10.2}, Color(1, 0, 0), Color(0, 0, 1)));
+  const std::vector<LatticeCrossing> crossings = crossingsOf(image);
+  ASSERT_EQ(crossings.size(), 20u);  // one per column line x = i + 0.5
+  for (const LatticeCrossing& c : crossings) {
+    EXPECT_EQ(c.left_pixel.y, 9);  // y down: walking right, the left side is up on screen
+    EXPECT_EQ(c.right_pixel.y, 10);
+    EXPECT_EQ(c.left_pixel.x, c.right_pixel.x);
+    EXPECT_NEAR(c.left_distance, 0.7, 1e-3);  // sample points snap to 1/1024 pixel
+    EXPECT_NEAR(c.right_distance, 0.3, 1e-3);
+    EXPECT_NEAR(c.footprint, 0.5, 1e-12);
+    EXPECT_NEAR(c.position, (c.left_pixel.x + 0.5) / 20.0, 1e-6);
+  }
+}
+
+TEST(LatticeCrossingsTest, ScaleMapsTheCurveToTheGrid) {
+  DiffusionCurveImage image{40, 40, {}};
+  image.curves.push_back(lineCurve({0, 20.4}, {40, 20.4}, Color(1, 0, 0), Color(0, 0, 1)));
+  std::vector<LatticeCrossing> crossings;
+  forEachLatticeCrossing(image, 0.5, 20, 20,
+                         [&](const LatticeCrossing& c) { crossings.push_back(c); });
+  ASSERT_EQ(crossings.size(), 20u);
+  EXPECT_EQ(crossings.front().left_pixel.y, 9);  // y = 10.2 on the half-size grid
+}
+
+TEST(LatticeCrossingsTest, DiagonalCrossesRowsAndColumns) {
+  DiffusionCurveImage image{10, 10, {}};
+  image.curves.push_back(lineCurve({0, 0}, {10, 10}, Color(1, 0, 0), Color(0, 0, 1)));
+  const std::vector<LatticeCrossing> crossings = crossingsOf(image);
+  EXPECT_EQ(crossings.size(), 20u);  // through every pixel centre: rows and columns once each
+  for (const LatticeCrossing& c : crossings) EXPECT_NEAR(c.footprint, 0.7071, 1e-3);
+}
+
+TEST(LatticeCrossingsTest, EndsOutsideTheImageAreContinued) {
+  // A 36 pixel image on the 3x3 grid of scale 1/16: the last row's centre line y = 2.5 lies
+  // past the scaled image border 2.25. The curve leaves the image at full scale, but scaled
+  // it would end at y = 2.375 and stop short of that line without the continuation.
+  DiffusionCurveImage image{36, 36, {}};
+  image.curves.push_back(lineCurve({10.2, 10}, {10.2, 38}, Color(1, 0, 0), Color(0, 0, 1)));
+  std::vector<LatticeCrossing> crossings;
+  forEachLatticeCrossing(image, 1.0 / 16.0, 3, 3,
+                         [&](const LatticeCrossing& c) { crossings.push_back(c); });
+  ASSERT_EQ(crossings.size(), 2u);
+  EXPECT_EQ(crossings.back().left_pixel.y, 2);
+  EXPECT_DOUBLE_EQ(crossings.back().position, 1.0);  // the end's colour
+}
+
+TEST(LatticeCrossingsTest, CurvesOutsideOrWithoutLengthGiveNone) {
+  DiffusionCurveImage image{10, 10, {}};
+  image.curves.push_back(lineCurve({50, 50}, {80, 90}, Color(1, 0, 0), Color(0, 0, 1)));
+  image.curves.push_back(lineCurve({5, 5}, {5, 5}, Color(1, 0, 0), Color(0, 0, 1)));
+  DiffusionCurve broken;
+  broken.control_points = {{0, 0}, {10, 10}};  // not 3K+1 points
+  image.curves.push_back(broken);
+  EXPECT_TRUE(crossingsOf(image).empty());
+}
+
+}  // namespace
+}  // namespace vicc_glyphs

@@ -1,0 +1,107 @@
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "direct_reference_solve.hpp"
+#include "sample_images.hpp"
+#include "vicc_glyphs/render/multigrid.hpp"
+#include "vicc_glyphs/render/renderer.hpp"
+
+namespace vicc_glyphs {
+namespace {
+
+struct Comparison {
+  double mae = 0.0;
+  MultigridReport report;
+};
+
+Comparison compareWithDirect(const DiffusionCurveImage& image, const MultigridOptions& options) {
+  const std::vector<GridProblem> levels =
+      assembleColorLevels(image, Color::Zero(), options.coarsest_size);
+  Comparison comparison;
+  const std::vector<float> multigrid = solveMultigrid(levels, options, &comparison.report);
+  comparison.mae = meanAbsoluteError(multigrid, solveDirect(levels.front()));
+  return comparison;
+}
+
+class MultigridVersusDirectTest
+    : public ::testing::TestWithParam<std::pair<std::string, DiffusionCurveImage>> {};
+
+TEST_P(MultigridVersusDirectTest, DefaultCyclesMatchTheDirectSolve) {
+  const Comparison result = compareWithDirect(GetParam().second, MultigridOptions{});
+  EXPECT_LE(result.mae, 0.005) << GetParam().first;
+  EXPECT_GT(result.report.levels, 4);
+}
+
+TEST_P(MultigridVersusDirectTest, WithoutCoarseLevelsSmoothingAloneIsFarOff) {
+  // The same sweep count without the hierarchy: shows the comparison can fail.
+  MultigridOptions options;
+  options.coarsest_size = 100000;
+  options.coarsest_sweeps = 12;
+  EXPECT_GT(compareWithDirect(GetParam().second, options).mae, 0.01) << GetParam().first;
+}
+
+// Odd and non-square sizes exercise the ceil-halving of the hierarchy.
+INSTANTIATE_TEST_SUITE_P(
+    SampleImages, MultigridVersusDirectTest,
+    ::testing::Values(std::pair{std::string("line"), twoColourLineImage(160, 120)},
+                      std::pair{std::string("circle"), circleImage(201, 157)},
+                      std::pair{std::string("gradient_circle"), gradientCircleImage(200, 200)},
+                      std::pair{std::string("barrier"), barrierImage(192, 128)},
+                      std::pair{std::string("icon_like"), iconLikeImage(256, 256)}),
+    [](const auto& info) { return info.param.first; });
+
+std::vector<double> residualHistory(const DiffusionCurveImage& image, int cycles) {
+  MultigridOptions options;
+  options.fine_cycles = cycles;
+  options.record_residuals = true;
+  MultigridReport report;
+  solveMultigrid(assembleColorLevels(image, Color::Zero(), options.coarsest_size), options,
+                 &report);
+  return report.residuals;
+}
+
+TEST(MultigridTest, ResidualAtLeastHalvesWithEveryVCycleForClosedCurves) {
+  const std::vector<double> r = residualHistory(gradientCircleImage(256, 256), 4);
+  ASSERT_EQ(r.size(), 5u);
+  EXPECT_GT(r[0], 1e-4);  // the FMG start is not already converged
+  for (size_t k = 1; k < r.size(); ++k) EXPECT_LT(r[k], 0.5 * r[k - 1]) << "cycle " << k;
+}
+
+TEST(MultigridTest, ResidualKeepsShrinkingWithBarriersAndOpenCurveEnds) {
+  // Curve ends and barrier tips are where the coarse grids see the geometry least well:
+  // convergence is slower and not monotone per cycle, but steady over pairs of cycles.
+  const std::vector<double> r = residualHistory(iconLikeImage(256, 256), 6);
+  ASSERT_EQ(r.size(), 7u);
+  for (size_t k = 2; k < r.size(); ++k) EXPECT_LT(r[k], 0.5 * r[k - 2]) << "cycle " << k;
+  EXPECT_LT(r.back(), 0.01 * r.front());
+}
+
+TEST(MultigridTest, RejectsInconsistentHierarchies) {
+  const DiffusionCurveImage image = circleImage(64, 64);
+  std::vector<GridProblem> levels = assembleColorLevels(image, Color::Zero(), 4);
+  levels.erase(levels.begin() + 1);  // a level of the wrong size
+  EXPECT_THROW(solveMultigrid(levels, {}, nullptr), std::invalid_argument);
+  EXPECT_THROW(solveMultigrid({}, {}, nullptr), std::invalid_argument);
+}
+
+TEST(MultigridTest, LevelSizesHalveRoundingUp) {
+  const auto sizes = levelSizes(201, 50, 4);
+  ASSERT_GE(sizes.size(), 2u);
+  EXPECT_EQ(sizes[1], std::make_pair(101, 25));
+  EXPECT_LE(std::max(sizes.back().first, sizes.back().second), 4);
+  const auto thin = levelSizes(1000, 1, 4);  // thin images coarsen along their long side
+  EXPECT_EQ(thin.back(), std::make_pair(4, 1));
+}
+
+TEST(MultigridTest, ThinImageConverges) {
+  DiffusionCurveImage image{1000, 1, {}};
+  image.curves.push_back(lineCurve({100.2, -2}, {100.2, 3}, Color(1, 0, 0), Color(0, 0, 1)));
+  image.curves.push_back(lineCurve({900.2, 3}, {900.2, -2}, Color(0, 1, 0), Color(0, 1, 0)));
+  const std::vector<GridProblem> levels = assembleColorLevels(image, Color::Zero(), 4);
+  EXPECT_LE(meanAbsoluteError(solveMultigrid(levels, {}, nullptr), solveDirect(levels.front())),
+            1e-3);
+}
+
+}  // namespace
+}  // namespace vicc_glyphs

@@ -1,0 +1,27 @@
+#pragma once
+// Small DCIs with known answers for the renderer tests and the bench.
+
+#include "vicc_glyphs/dci/diffusion_curve.hpp"
+
+namespace vicc_glyphs {
+
+/// A straight one-segment curve from `from` to `to` with constant side colours.
+DiffusionCurve lineCurve(const Point2& from, const Point2& to, const Color& left,
+                         const Color& right);
+/// A closed circle of four Beziers, clockwise on screen, so its inside is its right side.
+DiffusionCurve circleCurve(const Point2& centre, double radius, const Color& inside,
+                           const Color& outside);
+
+/// A vertical line through the whole image at x = 0.45 * width, drawn upwards: red on its left
+/// (screen left), blue on its right.
+DiffusionCurveImage twoColourLineImage(int width, int height);
+/// A circle with an orange inside and a dark blue outside.
+DiffusionCurveImage circleImage(int width, int height);
+/// A circle whose inside colour runs red, green, blue, yellow around it: a smooth gradient.
+DiffusionCurveImage gradientCircleImage(int width, int height);
+/// A full-height vertical barrier at the middle, a red circle left of it, a blue one right.
+DiffusionCurveImage barrierImage(int width, int height);
+/// Several curves with colour gradients along them, a partial barrier and nested circles.
+DiffusionCurveImage iconLikeImage(int width, int height);
+
+}  // namespace vicc_glyphs

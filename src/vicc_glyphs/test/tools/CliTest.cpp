@@ -1,0 +1,134 @@
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+#include <string>
+
+// Runs the built vicc_glyph binary (VICC_GLYPH_BINARY, set by cmake/cli.cmake) like a user.
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ToolRun {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("vicc_glyph_cli_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  ToolRun run(const std::string& arguments) const {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = std::string(VICC_GLYPH_BINARY) + " " + arguments + " >" +
+                                out.string() + " 2>" + err.string();
+    const int status = std::system(command.c_str());
+    ToolRun result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = readFile(out);
+    result.err = readFile(err);
+    return result;
+  }
+
+  static std::string data(const std::string& name) {
+    return std::string(TEST_DATA_DIR) + "/" + name;
+  }
+
+  fs::path dir_;
+};
+
+cv::Vec3b rgbAt(const cv::Mat& bgr, int x, int y) {
+  const cv::Vec3b pixel = bgr.at<cv::Vec3b>(y, x);
+  return {pixel[2], pixel[1], pixel[0]};
+}
+
+TEST_F(CliTest, RendersAnOrzanXmlWithTheColoursOnTheirSides) {
+  const fs::path png = dir_ / "line.png";
+  const ToolRun result =
+      run("render " + data("left_red_right_blue.xml") + " --out " + png.string());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const cv::Mat image = cv::imread(png.string());
+  ASSERT_EQ(image.size(), cv::Size(40, 32));
+  EXPECT_EQ(rgbAt(image, 5, 16), cv::Vec3b(255, 0, 0));
+  EXPECT_EQ(rgbAt(image, 35, 16), cv::Vec3b(0, 0, 255));
+}
+
+TEST_F(CliTest, RendersAnSvgAtTheRequestedSizeWithReportAndDci) {
+  const fs::path png = dir_ / "square.png", xml = dir_ / "square.xml";
+  const ToolRun result = run("render " + data("red_square.svg") + " --out " + png.string() +
+                             " --size 48 --report --dci " + xml.string());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const cv::Mat image = cv::imread(png.string());
+  ASSERT_EQ(image.size(), cv::Size(48, 48));
+  EXPECT_EQ(rgbAt(image, 24, 24), cv::Vec3b(255, 0, 0));
+  EXPECT_EQ(rgbAt(image, 2, 2), cv::Vec3b(255, 255, 255));
+  EXPECT_TRUE(fs::exists(xml));
+  EXPECT_NE(result.out.find("rms residual after cycle 2"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("time ms"), std::string::npos);
+}
+
+TEST_F(CliTest, BadArgumentsFailWithAMessage) {
+  const ToolRun nothing = run("");
+  EXPECT_EQ(nothing.exit_code, 2);
+  EXPECT_NE(nothing.err.find("usage"), std::string::npos);
+
+  const ToolRun unknown = run("paint x.svg");
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("unknown subcommand 'paint'"), std::string::npos);
+
+  const ToolRun no_out = run("render " + data("red_square.svg"));
+  EXPECT_EQ(no_out.exit_code, 2);
+  EXPECT_NE(no_out.err.find("missing --out"), std::string::npos);
+
+  const ToolRun bad_size = run("render " + data("red_square.svg") + " --out x.png --size -3");
+  EXPECT_EQ(bad_size.exit_code, 2);
+  EXPECT_NE(bad_size.err.find("--size"), std::string::npos);
+}
+
+TEST_F(CliTest, BadFilesFailWithAMessage) {
+  const ToolRun missing =
+      run("render " + (dir_ / "missing.svg").string() + " --out " + (dir_ / "x.png").string());
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("missing.svg"), std::string::npos) << missing.err;
+
+  const fs::path broken = dir_ / "broken.xml";
+  std::ofstream(broken) << "<curve_set image_width=\"-4\">";
+  const ToolRun malformed =
+      run("render " + broken.string() + " --out " + (dir_ / "x.png").string());
+  EXPECT_EQ(malformed.exit_code, 1);
+  EXPECT_FALSE(malformed.err.empty());
+
+  const ToolRun unwritable = run("render " + data("red_square.svg") + " --out " +
+                                 (dir_ / "no_such_dir" / "x.png").string());
+  EXPECT_EQ(unwritable.exit_code, 1);
+  EXPECT_NE(unwritable.err.find("cannot write"), std::string::npos) << unwritable.err;
+}
+
+TEST_F(CliTest, HelpSucceeds) {
+  EXPECT_EQ(run("--help").exit_code, 0);
+  const ToolRun help = run("render --help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("--size N"), std::string::npos);
+}
+
+}  // namespace
