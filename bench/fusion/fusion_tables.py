@@ -18,15 +18,17 @@ def load(out, name):
 
 
 def drift(report):
-    """(position m, rotation deg) or None when tracking failed or the run is missing."""
-    if report is None or report["frames"]["lost"] > 0 or "first_to_last_pose" not in report:
+    """(position m, rotation deg); None when tracking failed; "n/a" when the run is missing."""
+    if report is None:
+        return "n/a"
+    if report["frames"]["lost"] > 0 or "first_to_last_pose" not in report:
         return None
     d = report["first_to_last_pose"]
     return d["position_m"], d["rotation_deg"]
 
 
 def cell(f2f, f2m):
-    text = lambda d: "∅" if d is None else f"{d[0] * 1000:.1f} mm / {d[1]:.2f}°"
+    text = lambda d: "∅" if d is None else d if d == "n/a" else f"{d[0] * 1000:.1f} mm / {d[1]:.2f}°"
     return f"{text(f2f)} → {text(f2m)}"
 
 
@@ -54,6 +56,8 @@ def main():
                     f2f = drift(load(out, f"{scenario}_{init}_s{step}_l{levels}.json"))
                     f2m = drift(load(out, f"{scenario}_{init}_s{step}_l{levels}_f2m.json"))
                     row.append(cell(f2f, f2m))
+                    if f2f == "n/a" or f2m == "n/a":
+                        continue
                     if f2f and f2m:
                         if f2m[0] < f2f[0] - 0.0005:
                             better += 1

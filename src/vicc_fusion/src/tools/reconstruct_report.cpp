@@ -61,6 +61,7 @@ nlohmann::json makeReport(const ReconstructOptions& options, const ReconstructRu
     report["fusion"] = {
         {"frames_fused", fusion.frames_fused},
         {"frames_aligned_to_model", fusion.frames_aligned_to_model},
+        {"frames_model_fallback", fusion.frames_model_fallback},
         {"per_frame_mean",
          {{"merged", perFrame(fusion.merged)},
           {"confirmed", perFrame(fusion.confirmed)},

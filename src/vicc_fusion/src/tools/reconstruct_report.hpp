@@ -23,7 +23,8 @@ struct ReconstructRun {
   /// Filled when fusion ran.
   struct Fusion {
     size_t stable = 0, unstable = 0, memory_bytes = 0;
-    int frames_fused = 0, frames_aligned_to_model = 0, surfels_refused = 0;
+    int frames_fused = 0, frames_aligned_to_model = 0, frames_model_fallback = 0;
+    int surfels_refused = 0;
     long merged = 0, confirmed = 0, added = 0, removed_unconfirmed = 0, removed_free_space = 0,
          merged_duplicates = 0;
     vicc_tracking::SampleSummary fusion_ms, model_prediction_ms, pipeline_ms;

@@ -189,7 +189,13 @@ class Reconstruction {
     if (!report.accepted && !report.message.empty()) warn("depth frame dropped: " + report.message);
     statistics_.add(report);
     if (report.tracked()) trajectory_.push_back({stamp, report.camera_pose});
+    if (report.accepted && report.state == vicc_tracking::TrackingState::kLost) {
+      char where[64];
+      std::snprintf(where, sizeof(where), "frame %zu (t = %.3f): ", index, stamp);
+      warn(where + report.message);
+    }
     if (report.aligned_to_model && run_.fusion) ++run_.fusion->frames_aligned_to_model;
+    if (report.model_fallback && run_.fusion) ++run_.fusion->frames_model_fallback;
     if (model_) fuse(report);
     if (!options_.quiet && secondsSince(last_progress_) > 1.0) printProgress(false);
   }

@@ -56,6 +56,8 @@ struct FrameReport {
   double identity_error_rotation_deg = 0.0;
   StageTimings timings;
   bool aligned_to_model = false;  ///< ICP reference was a model prediction (frame-to-model)
+  /// ICP against the model failed and the frame was aligned to the previous frame instead.
+  bool model_fallback = false;
   bool tracked() const { return accepted && state != TrackingState::kInitializing; }
 };
 
@@ -76,12 +78,15 @@ class Tracker {
   FrameReport addDepth(double stamp, const cv::Mat& raw_depth);
 
   /// The pyramid of the frame addDepth() just tracked, for fusion. Valid until the next
-  /// addDepth() or useModelPrediction(); empty before tracking starts.
-  const DepthPyramid& currentFrame() const { return reference_; }
+  /// addDepth(); empty before tracking starts.
+  const DepthPyramid& currentFrame() const {
+    return reference_is_model_ ? last_frame_ : reference_;
+  }
 
   /// Frame-to-model tracking: the next frame is aligned to `prediction` (the model rendered
   /// at the last camera pose, laid out like currentFrame()) instead of to the last frame.
   /// Returns false, keeping frame-to-frame, when not tracking or the layout does not match.
+  /// Should ICP against the model fail, the frame is aligned to the previous frame instead.
   bool useModelPrediction(DepthPyramid&& prediction);
 
   void reset();
@@ -111,6 +116,7 @@ class Tracker {
   Eigen::Isometry3d last_camera_pose_ = Eigen::Isometry3d::Identity();
   DepthPyramid reference_;
   bool reference_is_model_ = false;
+  DepthPyramid last_frame_;  ///< the previous frame while reference_ is a model prediction
 };
 
 /// Translation (m) and rotation (deg) between two poses.

@@ -83,6 +83,7 @@ bool Tracker::useModelPrediction(DepthPyramid&& prediction) {
       return false;
     }
   }
+  last_frame_ = std::move(reference_);  // kept for the fallback, not copied
   reference_ = std::move(prediction);
   reference_is_model_ = true;
   return true;
@@ -94,6 +95,7 @@ void Tracker::reset() {
   last_stamp_.reset();
   reference_.clear();
   reference_is_model_ = false;
+  last_frame_.clear();
   strategy_.reset();
   still_phase_.reset();
   synchronizer_.reset();
@@ -217,8 +219,18 @@ FrameReport Tracker::addDepth(double stamp, const cv::Mat& raw_depth) {
   const auto icp_start = std::chrono::steady_clock::now();
   const Eigen::Isometry3d reference_pose = last_camera_pose_;
   report.icp = icp_.align(pyramid, reference_, reference_pose.inverse() * guess);
-  report.timings.icp_ms = millisecondsSince(icp_start);
   report.aligned_to_model = reference_is_model_;
+  if (!report.icp.ok && reference_is_model_ && !last_frame_.empty()) {
+    // The model can miss what the last frame saw (holes, newly seen surface): a frame-to-frame
+    // alignment is better than losing track.
+    IcpResult fallback = icp_.align(pyramid, last_frame_, reference_pose.inverse() * guess);
+    if (fallback.ok) {
+      report.icp = std::move(fallback);
+      report.aligned_to_model = false;
+      report.model_fallback = true;
+    }
+  }
+  report.timings.icp_ms = millisecondsSince(icp_start);
 
   report.initial_guess = guess;
   if (report.icp.ok) {
@@ -242,6 +254,7 @@ FrameReport Tracker::addDepth(double stamp, const cv::Mat& raw_depth) {
   last_stamp_ = stamp;
   reference_ = std::move(pyramid);
   reference_is_model_ = false;
+  last_frame_.clear();
   report.state = state_;
   report.frame_index = ++frame_index_;
   report.timings.total_ms = millisecondsSince(start);
