@@ -28,6 +28,7 @@ demo: build
 bench: build
 	@bash bench/run_tracking_bench.sh
 	@bash bench/run_fusion_bench.sh
+	@bash bench/glyphs/run_glyph_bench.sh
 
 clean:
 	rm -rf build devel install

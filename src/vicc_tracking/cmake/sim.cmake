@@ -17,7 +17,8 @@ if(CATKIN_ENABLE_TESTING)
     test/sim/TrajectoryTest.cpp
     test/sim/RigSimulatorTest.cpp
     test/sim/ScenarioTest.cpp
-    test/sim/VisibleSurfaceTest.cpp)
+    test/sim/VisibleSurfaceTest.cpp
+    test/sim/TrackerTest.cpp)
   target_compile_options(vicc_tracking_sim_test PRIVATE ${VICC_WARNINGS})
   target_link_libraries(vicc_tracking_sim_test vicc_tracking_sim gtest_main)
 endif()
