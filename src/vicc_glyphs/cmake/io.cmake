@@ -49,6 +49,7 @@ if(CATKIN_ENABLE_TESTING)
     test/io/RasterImportTest.cpp
     test/io/MalformedInputTest.cpp
     test/io/LoadTest.cpp
+    test/io/PublishedSampleTest.cpp
   )
   target_include_directories(vicc_glyphs_io_test SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
   target_include_directories(vicc_glyphs_io_test PRIVATE src/io)
@@ -56,5 +57,7 @@ if(CATKIN_ENABLE_TESTING)
   target_compile_definitions(vicc_glyphs_io_test PRIVATE
     VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data"
     VICC_GLYPHS_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/test/data")
-  target_link_libraries(vicc_glyphs_io_test vicc_glyphs_io ${OpenCV_LIBRARIES} gtest_main)
+  # PublishedSampleTest renders the samples it reads.
+  target_link_libraries(vicc_glyphs_io_test vicc_glyphs_io vicc_glyphs_render ${OpenCV_LIBRARIES}
+    gtest_main)
 endif()

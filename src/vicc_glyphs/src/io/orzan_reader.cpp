@@ -95,15 +95,15 @@ class OrzanReader {
                     [&](const Point2& p) { return p == curve.control_points.front(); });
     if (zero_length) throw FormatError(source_, place, "zero-length curve (all points equal)");
 
-    // Mirroring x and y swaps the sides: the file's left colours are on our right.
+    // The file's left side is our left side (see orzan_conventions.hpp).
     const XMLElement& file_left = requireChild(element, "left_colors_set", place);
     const XMLElement& file_right = requireChild(element, "right_colors_set", place);
-    curve.right_colors = readColors(file_left, "left_color", segments, place);
-    curve.left_colors = readColors(file_right, "right_color", segments, place);
-    curve.right_emits = !isBarrier(file_left);
-    curve.left_emits = !isBarrier(file_right);
-    checkDeclaredCount(element, "nb_left_colors", curve.right_colors.size(), place);
-    checkDeclaredCount(element, "nb_right_colors", curve.left_colors.size(), place);
+    curve.left_colors = readColors(file_left, "left_color", segments, place);
+    curve.right_colors = readColors(file_right, "right_color", segments, place);
+    curve.left_emits = !isBarrier(file_left);
+    curve.right_emits = !isBarrier(file_right);
+    checkDeclaredCount(element, "nb_left_colors", curve.left_colors.size(), place);
+    checkDeclaredCount(element, "nb_right_colors", curve.right_colors.size(), place);
     if (const XMLElement* blur = element.FirstChildElement("blur_points_set")) {
       curve.blur_points = readBlurPoints(*blur, segments, place);
       checkDeclaredCount(element, "nb_blur_points", curve.blur_points.size(), place);

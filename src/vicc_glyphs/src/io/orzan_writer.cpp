@@ -47,17 +47,17 @@ std::string formatOrzanXml(const DiffusionCurveImage& image) {
   out << "<curve_set image_width=\"" << image.width << "\" image_height=\"" << image.height
       << "\" nb_curves=\"" << image.curves.size() << "\">\n";
   for (const DiffusionCurve& curve : image.curves) {
-    // Our right side is the file's left side (the x/y swap mirrors the plane).
+    // The file's left side is our left side (see orzan_conventions.hpp).
     out << " <curve nb_control_points=\"" << curve.control_points.size() << "\" nb_left_colors=\""
-        << curve.right_colors.size() << "\" nb_right_colors=\"" << curve.left_colors.size()
+        << curve.left_colors.size() << "\" nb_right_colors=\"" << curve.right_colors.size()
         << "\" nb_blur_points=\"" << curve.blur_points.size() << "\" lifetime=\"32\">\n";
     out << "  <control_points_set>\n";
     for (const Point2& p : curve.control_points) {
       out << "   <control_point" << attribute("x", p.y()) << attribute("y", p.x()) << "/>\n";
     }
     out << "  </control_points_set>\n";
-    writeColors(out, "left_colors_set", "left_color", curve.right_colors, curve.right_emits);
-    writeColors(out, "right_colors_set", "right_color", curve.left_colors, curve.left_emits);
+    writeColors(out, "left_colors_set", "left_color", curve.left_colors, curve.left_emits);
+    writeColors(out, "right_colors_set", "right_color", curve.right_colors, curve.right_emits);
     out << "  <blur_points_set>\n";
     for (const BlurPoint& b : curve.blur_points) {
       out << "   <best_scale" << attribute("value", b.sigma)

@@ -30,23 +30,23 @@ TEST(OrzanXml, SampleHasSizeCurvesAndSwappedCoordinates) {
   EXPECT_EQ(image.curves[1].control_points[3], Point2(62, 24));
 }
 
-TEST(OrzanXml, SampleColoursAreBgrAndSidesMirrored) {
+TEST(OrzanXml, SampleColoursAreBgrAndSidesKept) {
   const DiffusionCurveImage image = readOrzanXml(kSample);
   const DiffusionCurve& c = image.curves[0];
-  // The file's left set (G=128 R=255 B=0) is our right side, with B and R exchanged.
-  ASSERT_EQ(c.right_colors.size(), 2u);
-  expectColor(c.right_colors[0], 0.0, 0, 128, 255);
-  expectColor(c.right_colors[1], 2.0, 200, 64, 32);
-  ASSERT_EQ(c.left_colors.size(), 3u);
-  expectColor(c.left_colors[1], 0.5, 0, 0, 0);
-  expectColor(c.left_colors[2], 2.0, 30, 10, 20);
+  // The file's left set (G=128 R=255 B=0) is our left side, with B and R exchanged.
+  ASSERT_EQ(c.left_colors.size(), 2u);
+  expectColor(c.left_colors[0], 0.0, 0, 128, 255);
+  expectColor(c.left_colors[1], 2.0, 200, 64, 32);
+  ASSERT_EQ(c.right_colors.size(), 3u);
+  expectColor(c.right_colors[1], 0.5, 0, 0, 0);
+  expectColor(c.right_colors[2], 2.0, 30, 10, 20);
   ASSERT_EQ(c.blur_points.size(), 2u);
   EXPECT_DOUBLE_EQ(c.blur_points[1].position, 2.0);
   EXPECT_DOUBLE_EQ(c.blur_points[1].sigma, 2.0);
   const DiffusionCurve& barrier = image.curves[1];
-  EXPECT_FALSE(barrier.right_emits);
-  EXPECT_TRUE(barrier.left_emits);
-  expectColor(barrier.left_colors.at(0), 1.0, 204, 51, 102);
+  EXPECT_FALSE(barrier.left_emits);
+  EXPECT_TRUE(barrier.right_emits);
+  expectColor(barrier.right_colors.at(0), 1.0, 204, 51, 102);
 }
 
 DiffusionCurveImage makeImage() {
