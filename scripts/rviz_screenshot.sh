@@ -20,4 +20,4 @@ xvfb-run -a -s "-screen 0 1280x800x24" bash -c "
   kill -INT \$LAUNCH; wait \$LAUNCH || true
 "
 echo "screenshot: $PNG (roslaunch log: $LOG)"
-grep -E "tracker: (tracking|ready)|lost|ERROR|FATAL" "$LOG" | head -20 || true
+grep -E "tracker: (tracking|ready)|fusion:|lost|ERROR|FATAL" "$LOG" | head -20 || true
