@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Glyph bench (issue 5): renders every vendored icon and the gallery's coloured DCIs at
-# 512 x 512 on one core and writes bench/glyphs/results.md: median render time (renderer
-# reused, first render excluded), multigrid levels and V-cycles, final residual and the mean
-# absolute error against a direct sparse solve of the same discrete problem.
+# 512 x 512 on one core and writes bench/glyphs/results.md: one-shot render time (the first
+# render, with a fresh renderer), median render time (renderer reused, first render
+# excluded), multigrid levels and V-cycles, final residual and the mean absolute error
+# against a direct sparse solve of the same discrete problem.
 # Usage: bench/glyphs/run_glyph_bench.sh [path/to/vicc_glyph_bench]
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -27,9 +28,12 @@ cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"
   echo "Produced by \`bench/glyphs/run_glyph_bench.sh\` on $(date -u +%Y-%m-%d) ($cpu, $(grep -c ^processor /proc/cpuinfo) cores"
   echo "shared with other jobs; one thread). Release build, 512 x 512 RGB, default options"
   echo "(FMG + 2 V(2,2)-cycles on the finest grid, anti-aliasing on; the blur pass runs only for"
-  echo "DCIs with blur points: heart_glow). Times are medians of 31 renders with a reused"
-  echo "\`DiffusionCurveRenderer\`; the first render of each input, which also pays for"
-  echo "first-touch page faults of its ~30 MB of buffers, is excluded. MAE is the mean absolute"
+  echo "DCIs with blur points: heart_glow). \"one-shot ms\" is the first render of each input"
+  echo "with a fresh \`DiffusionCurveRenderer\` (as \`renderDiffusionCurves()\` or a CLI run), which"
+  echo "also pays for first-touch page faults of its buffers (huge pages where the kernel grants"
+  echo "them, see src/vicc_glyphs/docs/rendering.md); later inputs may reuse memory the process"
+  echo "already has, so a CLI run is the colder case. The other times are medians of 31 renders"
+  echo "with a reused renderer, first render excluded. MAE is the mean absolute"
   echo "difference (colours in 0..1) between the multigrid solution and Eigen's SimplicialLDLT"
   echo "solve of the identical discrete problem (before anti-aliasing and blur). \"median ms\" is"
   echo "wall time of the whole render (assembly of all levels, multigrid, anti-aliasing, blur),"

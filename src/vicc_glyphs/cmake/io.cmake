@@ -14,6 +14,7 @@ add_library(vicc_glyphs_io
   src/io/xml_attributes.cpp
   src/io/orzan_reader.cpp
   src/io/orzan_writer.cpp
+  src/io/usvg_scene_reader.cpp
   src/io/svg_number_scanner.cpp
   src/io/svg_color.cpp
   src/io/svg_transform.cpp
@@ -50,6 +51,7 @@ if(CATKIN_ENABLE_TESTING)
     test/io/MalformedInputTest.cpp
     test/io/LoadTest.cpp
     test/io/PublishedSampleTest.cpp
+    test/io/UsvgSceneTest.cpp
   )
   target_include_directories(vicc_glyphs_io_test SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
   target_include_directories(vicc_glyphs_io_test PRIVATE src/io)

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cctype>
 
+#include "text_file.hpp"
 #include "vicc_glyphs/io/orzan_xml.hpp"
 #include "vicc_glyphs/io/raster_import.hpp"
 #include "vicc_glyphs/io/svg_import.hpp"
+#include "vicc_glyphs/io/usvg_scene_xml.hpp"
 
 namespace vicc_glyphs {
 namespace {
@@ -20,9 +22,17 @@ std::string lowerExtension(const std::string& path) {
   return extension;
 }
 
+// Both XML formats share the .xml extension; the root element tells them apart
+// (<scene>: small-usvg SceneXML, otherwise Orzan's <curve_set>).
+DiffusionCurveImage loadXml(const std::string& path) {
+  const std::string text = io_detail::readTextFile(path);
+  if (hasUsvgSceneRoot(text)) return parseUsvgSceneXml(text, path);
+  return readOrzanXml(path);
+}
+
 DiffusionCurveImage loadByExtension(const std::string& path, int size) {
   const std::string extension = lowerExtension(path);
-  if (extension == "xml") return readOrzanXml(path);
+  if (extension == "xml") return loadXml(path);
   if (extension == "svg") {
     SvgImportOptions options;
     options.size = size;

@@ -28,7 +28,8 @@ void cutLink(GridProblem& problem, const GridPixel& a, const GridPixel& b) {
 // Marks pixels reachable over links from an already reached one by a forward and a backward
 // raster pass; returns whether every pixel is reached (the usual case, so the exact search
 // below rarely runs).
-bool propagateByRasterPasses(const GridProblem& problem, std::vector<std::uint8_t>& reached) {
+bool propagateByRasterPasses(const GridProblem& problem,
+                             render_detail::PixelVector<std::uint8_t>& reached) {
   const int w = problem.width, h = problem.height;
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
@@ -54,7 +55,8 @@ bool propagateByRasterPasses(const GridProblem& problem, std::vector<std::uint8_
 
 // Fixes every free pixel that links cannot connect to a Dirichlet pixel to `background`.
 void fixUnreachedPixels(GridProblem& problem, const std::vector<double>& background,
-                        std::vector<std::uint8_t>& reached, std::vector<int>& queue) {
+                        render_detail::PixelVector<std::uint8_t>& reached,
+                        std::vector<int>& queue) {
   const int w = problem.width;
   const int n = problem.pixelCount();
   reached.assign(problem.fixed.begin(), problem.fixed.end());
@@ -90,6 +92,10 @@ void resetProblem(GridProblem& problem, int width, int height, int channels) {
   problem.height = std::max(height, 0);
   problem.channels = channels;
   const int n = problem.pixelCount();
+  for (auto* flags : {&problem.couples_right, &problem.couples_down, &problem.fixed}) {
+    render_detail::reserveWithHugePages(*flags, n);
+  }
+  render_detail::reserveWithHugePages(problem.values, static_cast<size_t>(channels) * n);
   problem.couples_right.assign(n, 1);
   problem.couples_down.assign(n, 1);
   for (int y = 0; y < problem.height; ++y) {
@@ -102,8 +108,10 @@ void resetProblem(GridProblem& problem, int width, int height, int channels) {
 
 void assembleGridProblem(const DiffusionCurveImage& image, double scale, const SideSampler& sample,
                          const std::vector<double>& background, GridProblem& problem,
-                         std::vector<int>& counts, std::vector<float>& nearest,
-                         std::vector<std::uint8_t>& reached, std::vector<int>& queue) {
+                         render_detail::PixelVector<int>& counts,
+                         render_detail::PixelVector<float>& nearest,
+                         render_detail::PixelVector<std::uint8_t>& reached,
+                         std::vector<int>& queue) {
   const int n = problem.pixelCount();
   const int width = problem.width, height = problem.height, channels = problem.channels;
   if (n == 0) return;

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "multigrid_levels.hpp"
+#include "vicc_glyphs/render/pixel_buffer.hpp"
 
 namespace vicc_glyphs {
 namespace multigrid_detail {
@@ -24,7 +25,7 @@ using PixelValue = std::conditional_t<C == 3, Float4, float>;
 template <int C>
 class Multigrid {
   using Px = PixelValue<C>;
-  using Field = std::vector<Px>;
+  using Field = render_detail::PixelVector<Px>;
 
  public:
   // Sets up the levels for `problems`, reusing the memory of the previous solve.
@@ -35,16 +36,12 @@ class Multigrid {
     levels_.resize(count);
     u_.resize(count);
     f_.resize(count);
-    // Fields are zeroed only when (re)allocated: their ghost borders must stay 0, and every
-    // interior value is written before it is read.
-    const auto reserve = [](Field& field, size_t size) {
-      if (field.size() != size) field.assign(size, Px{});
-    };
+    // Fields are not zero-filled (fresh memory would be touched twice): every interior value
+    // is written before it is read, and only the ghost borders need zeros.
     for (size_t l = 0; l < count; ++l) {
       makeLevel(problems[l], levels_[l]);
-      const size_t size = levels_[l].size;
-      reserve(u_[l], size);
-      reserve(f_[l], l > 0 ? size : 0);  // the finest level has no right-hand side
+      allocateField(levels_[l], u_[l]);
+      if (l > 0) allocateField(levels_[l], f_[l]);  // the finest level has no right-hand side
     }
     for (size_t l = 0; l + 1 < levels_.size(); ++l) {
       Level& fine = levels_[l];
@@ -55,7 +52,7 @@ class Multigrid {
     }
   }
 
-  void solve(std::vector<float>& values, MultigridReport* report) {
+  void solve(float* values, MultigridReport* report) {
     const int coarsest = static_cast<int>(levels_.size()) - 1;
     std::vector<double> residuals;
     setDirichletValues(coarsest);
@@ -80,6 +77,22 @@ class Multigrid {
   }
 
  private:
+  // Sizes `field` for `level` (keeping its storage) and zeroes its ghost border, which the
+  // smoother and the residual read with weight 0 (garbage there could be NaN).
+  static void allocateField(const Level& level, Field& field) {
+    if (field.size() != level.size) {
+      field.clear();  // nothing to copy over when the storage grows
+      field.resize(level.size);
+    }
+    const int s = level.stride, rows = level.height + 2;
+    std::fill_n(field.begin(), s, Px{});
+    std::fill_n(field.begin() + static_cast<long>(rows - 1) * s, s, Px{});
+    for (int y = 1; y + 1 < rows; ++y) {
+      field[static_cast<size_t>(y) * s] = Px{};
+      field[static_cast<size_t>(y) * s + s - 1] = Px{};
+    }
+  }
+
   static float channel(const Px& value, int c) {
     if constexpr (C == 3) {
       return value[c];
@@ -257,10 +270,8 @@ class Multigrid {
     }
   }
 
-  void finestValues(std::vector<float>& values) const {
+  void finestValues(float* out) const {
     const Level& level = levels_[0];
-    values.resize(static_cast<size_t>(C) * level.width * level.height);
-    float* out = values.data();
     for (int y = 0; y < level.height; ++y) {
       for (int x = 0; x < level.width; ++x) {
         const Px& value = u_[0][level.index(x, y)];
@@ -312,6 +323,16 @@ MultigridSolver::~MultigridSolver() = default;
 
 void MultigridSolver::solve(const std::vector<GridProblem>& levels, const MultigridOptions& options,
                             std::vector<float>& values, MultigridReport* report) {
+  // Bad input is reported by the other overload; only a valid finest level sizes `values`.
+  if (!levels.empty() && levels.front().width > 0 && levels.front().height > 0 &&
+      levels.front().channels > 0) {
+    values.resize(static_cast<size_t>(levels.front().pixelCount()) * levels.front().channels);
+  }
+  solve(levels, options, values.data(), report);
+}
+
+void MultigridSolver::solve(const std::vector<GridProblem>& levels, const MultigridOptions& options,
+                            float* values, MultigridReport* report) {
   if (levels.empty()) throw std::invalid_argument("solveMultigrid: no levels");
   const int channels = levels.front().channels;
   for (size_t l = 0; l < levels.size(); ++l) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "vicc_glyphs/render/grid_problem.hpp"
+#include "vicc_glyphs/render/pixel_buffer.hpp"
 
 namespace vicc_glyphs::multigrid_detail {
 
@@ -68,13 +69,13 @@ struct Level {
   int height = 0;
   int stride = 0;
   size_t size = 0;
-  std::vector<std::uint8_t> mask;
+  render_detail::PixelVector<std::uint8_t> mask;
   std::vector<int> coarse_x, coarse_x_neighbour;  // bilinear prolongation sources per column
   std::vector<int> coarse_y, coarse_y_neighbour;  // ... and per row
   // Per pixel: the coarse sources (kProlongation index) used to interpolate a solution (FMG)
   // and a correction (V-cycle); see prolongationSources.
-  std::vector<std::uint8_t> solution_sources;
-  std::vector<std::uint8_t> correction_sources;
+  render_detail::PixelVector<std::uint8_t> solution_sources;
+  render_detail::PixelVector<std::uint8_t> correction_sources;
   // Free pixels whose coarse cell is a Dirichlet cell send their residual to these free
   // coarse cells instead (see prolongationSources).
   struct Redirect {
@@ -83,8 +84,8 @@ struct Level {
     float weight;
   };
   std::vector<Redirect> residual_redirects;
-  std::vector<std::uint8_t> pending;  // scratch of prolongationSources
-  std::vector<int> irregular;         // ditto
+  render_detail::PixelVector<std::uint8_t> pending;  // scratch of prolongationSources
+  std::vector<int> irregular;                        // ditto
 
   int index(int x, int y) const { return (y + 1) * stride + x + 1; }
 };

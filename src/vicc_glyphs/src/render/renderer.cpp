@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "vicc_glyphs/render/curve_antialiasing.hpp"
+#include "vicc_glyphs/render/pixel_buffer.hpp"
 #include "vicc_glyphs/render/variable_blur.hpp"
 
 namespace vicc_glyphs {
@@ -24,6 +25,65 @@ bool hasBlurPoints(const DiffusionCurveImage& image) {
   return false;
 }
 
+// Allocates the output Mats' pixels with PixelAllocator (2 MiB-aligned, huge-page advice):
+// OpenCV's default allocator gives blocks that mostly fault in 4 KiB at a time.
+class PixelMatAllocator : public cv::MatAllocator {
+ public:
+  cv::UMatData* allocate(int dims, const int* sizes, int type, void* data0, size_t* step,
+                         cv::AccessFlag, cv::UMatUsageFlags) const override {
+    size_t total = CV_ELEM_SIZE(type);
+    for (int i = dims - 1; i >= 0; --i) {  // as OpenCV's own allocator: dense steps
+      if (step) {
+        if (data0 && step[i] != cv::Mat::AUTO_STEP) {
+          CV_Assert(total <= step[i]);
+          total = step[i];
+        } else {
+          step[i] = total;
+        }
+      }
+      total *= sizes[i];
+    }
+    auto* u = new cv::UMatData(this);
+    u->size = total;
+    if (data0) {
+      u->data = u->origdata = static_cast<uchar*>(data0);
+      u->flags |= cv::UMatData::USER_ALLOCATED;
+    } else {
+      u->data = u->origdata = render_detail::PixelAllocator<uchar>().allocate(total);
+    }
+    return u;
+  }
+
+  bool allocate(cv::UMatData* u, cv::AccessFlag, cv::UMatUsageFlags) const override {
+    return u != nullptr;
+  }
+
+  void deallocate(cv::UMatData* u) const override {
+    if (!u) return;
+    if (!(u->flags & cv::UMatData::USER_ALLOCATED)) {
+      render_detail::PixelAllocator<uchar>().deallocate(u->origdata, u->size);
+    }
+    delete u;
+  }
+};
+
+// Never destroyed: result Mats handed to the caller may outlive static destruction.
+cv::MatAllocator* pixelMatAllocator() {
+  static cv::MatAllocator* const allocator = new PixelMatAllocator;
+  return allocator;
+}
+
+// Sizes `mat` (keeping its pixels when size and type already match) as one continuous block,
+// which the solver and the anti-aliasing write directly.
+float* prepareOutput(cv::Mat& mat, int rows, int cols, int type) {
+  if (!mat.isContinuous() || mat.rows != rows || mat.cols != cols || mat.type() != type) {
+    mat.release();
+    mat.allocator = pixelMatAllocator();
+  }
+  mat.create(rows, cols, type);
+  return mat.ptr<float>();
+}
+
 }  // namespace
 
 struct DiffusionCurveRenderer::Workspace {
@@ -31,10 +91,7 @@ struct DiffusionCurveRenderer::Workspace {
   MultigridSolver solver;
   CurveAntialiasing antialiasing;
   std::vector<GridProblem> levels;
-  std::vector<float> colors;
-  std::vector<float> blended;
-  std::vector<float> sigma;
-  cv::Mat sigma_mat;
+  cv::Mat sigma;
 };
 
 DiffusionCurveRenderer::DiffusionCurveRenderer() : workspace_(std::make_unique<Workspace>()) {}
@@ -64,14 +121,15 @@ void DiffusionCurveRenderer::render(const DiffusionCurveImage& input, const Rend
   result.report.timings.assemble_ms = millisecondsSince(phase);
 
   phase = Clock::now();
-  w.solver.solve(w.levels, options.multigrid, w.colors, &result.report.multigrid);
+  float* diffused = prepareOutput(result.diffused, image.height, image.width, CV_32FC3);
+  w.solver.solve(w.levels, options.multigrid, diffused, &result.report.multigrid);
   result.report.timings.solve_ms = millisecondsSince(phase);
-  valuesToMat(w.colors, image.width, image.height, 3, result.diffused);
 
   phase = Clock::now();
   if (options.antialias) {
-    w.antialiasing.blend(image, image.width, image.height, 3, w.colors, w.blended);
-    valuesToMat(w.blended, image.width, image.height, 3, result.image);
+    if (result.image.data == result.diffused.data) result.image.release();  // blend can't alias
+    float* blended = prepareOutput(result.image, image.height, image.width, CV_32FC3);
+    w.antialiasing.blend(image, image.width, image.height, 3, diffused, blended);
   } else {
     result.diffused.copyTo(result.image);
   }
@@ -85,9 +143,9 @@ void DiffusionCurveRenderer::render(const DiffusionCurveImage& input, const Rend
           w.assembler.assembleBlur(image, width, height, scale, level);
         },
         w.levels);
-    w.solver.solve(w.levels, options.multigrid, w.sigma, nullptr);
-    valuesToMat(w.sigma, image.width, image.height, 1, w.sigma_mat);
-    result.image = applyVariableBlur(result.image, w.sigma_mat);
+    float* sigma = prepareOutput(w.sigma, image.height, image.width, CV_32FC1);
+    w.solver.solve(w.levels, options.multigrid, sigma, nullptr);
+    result.image = applyVariableBlur(result.image, w.sigma);
     result.report.blurred = true;
     result.report.timings.blur_ms = millisecondsSince(phase);
   }

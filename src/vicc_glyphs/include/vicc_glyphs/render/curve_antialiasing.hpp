@@ -12,21 +12,27 @@
 
 namespace vicc_glyphs {
 
-/// Blends the diffusion across curves, keeping its per-pixel scratch memory between calls.
+/// Blends the diffusion across curves, keeping its scratch memory between calls.
 class CurveAntialiasing {
  public:
   /// `diffused`: width*height*channels values, pixel-major (the diffusion at scale 1 of
   /// `image`); writes the blended values to `blended` (not aliasing `diffused`).
   void blend(const DiffusionCurveImage& image, int width, int height, int channels,
              const std::vector<float>& diffused, std::vector<float>& blended);
+  /// As above on raw buffers of width*height*channels floats (e.g. cv::Mat pixels).
+  void blend(const DiffusionCurveImage& image, int width, int height, int channels,
+             const float* diffused, float* blended);
 
  private:
-  struct NearestCrossing {
-    float distance;
+  // A crossing next to `pixel`; only pixels next to a curve have any, so they are kept in a
+  // list (a few thousand at 512 x 512) rather than in a per-pixel array.
+  struct Candidate {
+    int pixel;
+    int across;       // pixel index on the other side of the curve
+    double distance;  // compared unrounded, as the crossings come
     float footprint;
-    int across;  // pixel index on the other side of the curve, -1 if none
   };
-  std::vector<NearestCrossing> nearest_;
+  std::vector<Candidate> candidates_;
 };
 
 /// One-off, in-place version of CurveAntialiasing::blend.

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
+#include "vicc_glyphs/render/pixel_buffer.hpp"
 
 namespace vicc_glyphs {
 
@@ -46,9 +47,9 @@ class GridAssembler {
                     GridProblem& problem);
 
  private:
-  std::vector<int> counts_;
-  std::vector<float> nearest_;
-  std::vector<std::uint8_t> reached_;
+  render_detail::PixelVector<int> counts_;
+  render_detail::PixelVector<float> nearest_;
+  render_detail::PixelVector<std::uint8_t> reached_;
   std::vector<int> queue_;
 };
 

@@ -62,6 +62,10 @@ class MultigridSolver {
   /// input.
   void solve(const std::vector<GridProblem>& levels, const MultigridOptions& options,
              std::vector<float>& values, MultigridReport* report);
+  /// As above, writing to `values` (room for width*height*channels floats of levels[0]), e.g.
+  /// straight into an output cv::Mat.
+  void solve(const std::vector<GridProblem>& levels, const MultigridOptions& options, float* values,
+             MultigridReport* report);
 
  private:
   struct Workspaces;
