@@ -120,12 +120,14 @@ TEST_F(FusionNodeTest, ModelLiesOnTheTrueSurface) {
   EXPECT_GT(accuracy.completeness, 0.6);
   EXPECT_LT(accuracy.surfels_outside, surfels.size() / 10);
 
-  // ~save_model writes what ~model shows.
+  // ~save_model writes the model ~model showed (the fusion may still have fused a last queued
+  // frame since: merges and removals change the count a little).
   vicc_msgs::SaveModel save;
   save.request.path = ::testing::TempDir() + "/vicc_fusion_rostest_model.ply";
   ASSERT_TRUE(ros::service::call("/fusion/save_model", save));
   EXPECT_TRUE(save.response.success) << save.response.message;
-  EXPECT_GE(save.response.surfels, surfels.size());
+  EXPECT_NEAR(static_cast<double>(save.response.surfels), static_cast<double>(surfels.size()),
+              0.05 * surfels.size());
   EXPECT_EQ(vicc_fusion::loadSurfelsPly(save.request.path).size(), save.response.surfels);
   std::remove(save.request.path.c_str());
   save.request.path = "/nonexistent/dir/model.ply";
