@@ -40,6 +40,15 @@ for scenario in "${SCENARIOS[@]}"; do
   done
 done
 
+# Speed: a separate pass at the end, one run at a time on one core, so that the timings of
+# the table are not those of runs that overlapped with building or other jobs.
+for scenario in "${SCENARIOS[@]}"; do
+  for levels in 3 1; do
+    taskset -c 0 rosrun vicc_fusion vicc_reconstruct "$OUT/$scenario.bag" --levels "$levels" \
+      --report "$OUT/${scenario}_ekf_s1_l${levels}_f2m_speed.json" --quiet 2>/dev/null
+  done
+done
+
 # The resolution target: which slots the model resolves (thesis Fig. 5.3).
 make_bag resolution_target
 target=$OUT/resolution_target

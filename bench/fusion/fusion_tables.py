@@ -95,13 +95,15 @@ def main():
 
     print("## Speed (224x171, one core, ekf, all frames)\n")
     print("Median per fused frame; pipeline = preprocessing + EKF prediction + ICP + fusion + "
-          "model prediction (`vicc_reconstruct --report`: `fusion.median_pipeline_ms`).\n")
+          "model prediction (`vicc_reconstruct --report`: `fusion.median_pipeline_ms`), from "
+          "the separate speed pass at the end of the script. The machine is a shared 2-core "
+          "VM: the same run varies by about ±10 %.\n")
     print("| scenario | levels | tracking, ms | fusion, ms | model prediction, ms | pipeline, ms "
           "| frames/s |")
     print("|---|---|---|---|---|---|---|")
     for scenario in scenarios:
         for levels in LEVELS:
-            report = load(out, f"{scenario}_ekf_s1_l{levels}_f2m.json")
+            report = load(out, f"{scenario}_ekf_s1_l{levels}_f2m_speed.json")
             if report is None:
                 continue
             f = report["fusion"]
