@@ -39,9 +39,14 @@ if(CATKIN_ENABLE_TESTING)
     test/render/GridProblemTest.cpp
     test/render/MultigridTest.cpp
     test/render/RendererTest.cpp
-    test/render/DegenerateInputTest.cpp)
+    test/render/DegenerateInputTest.cpp
+    test/render/BarrierConvergenceTest.cpp)
   target_compile_options(vicc_glyphs_render_test PRIVATE ${VICC_WARNINGS})
-  target_link_libraries(vicc_glyphs_render_test vicc_glyphs_render_reference gtest_main)
+  # BarrierConvergenceTest reads a vendored sample.
+  target_compile_definitions(vicc_glyphs_render_test PRIVATE
+    VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
+  target_link_libraries(vicc_glyphs_render_test vicc_glyphs_render_reference vicc_glyphs_io
+    gtest_main)
 
   catkin_add_gtest(vicc_glyphs_ros_test test/render/ImageMessageTest.cpp)
   target_compile_options(vicc_glyphs_ros_test PRIVATE ${VICC_WARNINGS})

@@ -1,11 +1,14 @@
 #include "vicc_glyphs/render/multigrid.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
+#include <tuple>
 #include <type_traits>
+#include <utility>
 
 #include "multigrid_levels.hpp"
 #include "vicc_glyphs/render/pixel_buffer.hpp"
@@ -36,12 +39,21 @@ class Multigrid {
     levels_.resize(count);
     u_.resize(count);
     f_.resize(count);
+    e_.resize(count);
     // Fields are not zero-filled (fresh memory would be touched twice): every interior value
     // is written before it is read, and only the ghost borders need zeros.
     for (size_t l = 0; l < count; ++l) {
       makeLevel(problems[l], levels_[l]);
       allocateField(levels_[l], u_[l]);
+      if (l + 1 < count) {  // the coarsest level gets no coarse-grid correction
+        labelFreeComponents(levels_[l]);
+        // Scaled corrections only happen inside the recursion (see applyCorrection).
+        if (l > 0) allocateField(levels_[l], e_[l]);
+      }
       if (l > 0) allocateField(levels_[l], f_[l]);  // the finest level has no right-hand side
+    }
+    if (count > 1) {  // sized for the finest level, used on every cycled level
+      for (Field* field : {&previous_, &step_, &a_step_}) allocateField(levels_[0], *field);
     }
     for (size_t l = 0; l + 1 < levels_.size(); ++l) {
       Level& fine = levels_[l];
@@ -63,7 +75,10 @@ class Multigrid {
       const int cycles = l == 0 ? options_.fine_cycles : options_.intermediate_cycles;
       if (l == 0 && options_.record_residuals) residuals.push_back(residualNorm(0));
       for (int k = 0; k < cycles; ++k) {
+        std::copy(u_[l].begin(), u_[l].end(), previous_.begin());
+        cycled_ = l;
         vcycle(l, u_[l].data(), nullptr);
+        accelerate(l, k == 0);
         if (l == 0 && options_.record_residuals) residuals.push_back(residualNorm(0));
       }
     }
@@ -138,8 +153,141 @@ class Multigrid {
     restrictResidual(l, u, f, f_[l + 1].data());
     std::fill(u_[l + 1].begin(), u_[l + 1].end(), Px{});
     vcycle(l + 1, u_[l + 1].data(), f_[l + 1].data());
-    prolong<true>(l, u_[l + 1].data(), u);
+    applyCorrection(l, u, f);
     smooth(l, u, f, options_.post_smoothing);
+  }
+
+  // Replaces the update d = u - u_previous of the V-cycle just done on level l by the
+  // combination a d + b s with the previous step s, per free component and channel (a
+  // flexible-CG-like two-term recurrence). A region coupled to its Dirichlet pixels only
+  // through gaps between barriers has a nearly singular Laplacian whose smooth error no
+  // re-rasterised coarse grid represents well: the V-cycle alone removes only a few per cent
+  // of it a cycle. (a, b) minimises the energy norm of the error; should that combination
+  // leave a larger residual than the one before the cycle, the (a, b) that minimises the
+  // residual is taken instead, so the residual never grows (a = b = 0 is a candidate).
+  void accelerate(int l, bool first) {
+    const Level& level = levels_[l];
+    Px* __restrict u = u_[l].data();
+    Px* __restrict d = previous_.data();  // holds u before the cycle; becomes the update
+    Px* __restrict step = step_.data();
+    Px* __restrict a_step = a_step_.data();
+    // Over the whole layout: the buffers are sized for the finest level, and the ghost border
+    // of this level must read 0.
+    for (size_t p = 0; p < level.size; ++p) d[p] = level.component[p] >= 0 ? u[p] - d[p] : Px{};
+    const size_t components = static_cast<size_t>(level.component_count);
+    sums_.assign(components, {});
+    for (int y = 0; y < level.height; ++y) {
+      for (int x = 0; x < level.width; ++x) {
+        const int p = level.index(x, y);
+        const int k = level.component[p];
+        if (k < 0) continue;
+        const Px ad = -residualAt(level, d, nullptr, p);  // A d (d is 0 at Dirichlet pixels)
+        const Px r = residualAt(level, u, nullptr, p);    // after the cycle: r0 - A d
+        Sums& sum = sums_[k];
+        accumulate(sum.d_ad, d[p] * ad);
+        accumulate(sum.r_d, r * d[p]);
+        accumulate(sum.ad_ad, ad * ad);
+        accumulate(sum.r_ad, r * ad);
+        accumulate(sum.r_r, r * r);
+        if (first) continue;
+        accumulate(sum.s_ad, step[p] * ad);
+        accumulate(sum.s_as, step[p] * a_step[p]);
+        accumulate(sum.r_s, r * step[p]);
+        accumulate(sum.as_ad, a_step[p] * ad);
+        accumulate(sum.as_as, a_step[p] * a_step[p]);
+        accumulate(sum.r_as, r * a_step[p]);
+      }
+    }
+    factors_.resize(components);
+    step_factors_.resize(components);
+    for (size_t k = 0; k < components; ++k) {
+      const Sums& sum = sums_[k];
+      for (int c = 0; c < C; ++c) {
+        // With r0 = r + A d: energy minimum  [dAd sAd; sAd sAs] (a, b) = (r0.d, r0.s),
+        // residual minimum [Ad.Ad Ad.As; Ad.As As.As] (a, b) = (r0.Ad, r0.As).
+        const auto solve2 = [first](double m11, double m12, double m22, double v1, double v2) {
+          const double det = m11 * m22 - m12 * m12;
+          if (!first && m11 > 0.0 && det > 1e-12 * m11 * m22) {
+            return std::pair{(v1 * m22 - v2 * m12) / det, (m11 * v2 - m12 * v1) / det};
+          }
+          return std::pair{m11 > 0.0 ? v1 / m11 : 0.0, 0.0};
+        };
+        const double ad_ad = sum.ad_ad[c], as_ad = sum.as_ad[c], as_as = sum.as_as[c];
+        const double r0_ad = sum.r_ad[c] + ad_ad, r0_as = sum.r_as[c] + as_ad;
+        const double r0_r0 = sum.r_r[c] + 2.0 * sum.r_ad[c] + ad_ad;
+        auto [a, b] = solve2(sum.d_ad[c], sum.s_ad[c], sum.s_as[c], sum.r_d[c] + sum.d_ad[c],
+                             sum.r_s[c] + sum.s_ad[c]);
+        // |r0 - a Ad - b As|^2
+        const double residual = r0_r0 - 2.0 * (a * r0_ad + b * r0_as) + a * a * ad_ad +
+                                2.0 * a * b * as_ad + b * b * as_as;
+        if (!(residual <= r0_r0)) std::tie(a, b) = solve2(ad_ad, as_ad, as_as, r0_ad, r0_as);
+        setChannel(factors_[k], c, static_cast<float>(a));
+        setChannel(step_factors_[k], c, static_cast<float>(b));
+      }
+    }
+    for (int y = 0; y < level.height; ++y) {
+      for (int x = 0; x < level.width; ++x) {
+        const int p = level.index(x, y);
+        const int k = level.component[p];
+        if (k < 0) continue;
+        const Px ad = -residualAt(level, d, nullptr, p);
+        const Px a = factors_[k];
+        Px x_new = a * d[p], ax_new = a * ad;
+        if (!first) {
+          x_new += step_factors_[k] * step[p];
+          ax_new += step_factors_[k] * a_step[p];
+        }
+        u[p] += x_new - d[p];
+        step[p] = x_new;
+        a_step[p] = ax_new;
+      }
+    }
+  }
+
+  // Adds the interpolated coarse correction e to u. Below the level being cycled (inside the
+  // recursion) it is scaled, per free component and channel, by the factor that minimises
+  // the energy norm of that component's error: alpha = <r, e> / <e, A e>, r the residual
+  // before the correction. The coarse problems are re-rasterised, not Galerkin products, so a
+  // region coupled to its Dirichlet pixels only weakly (through gaps at barrier ends, say)
+  // can be coupled much more weakly still on the coarse grid: its correction then overshoots
+  // many times over and the plain V-cycle diverges. With the factor no correction increases
+  // the energy of the error. On the cycled level itself accelerate() chooses the step.
+  void applyCorrection(int l, Px* __restrict u, const Px* __restrict f) {
+    if (l == cycled_) {
+      prolong<true>(l, u_[l + 1].data(), u);
+      return;
+    }
+    const Level& level = levels_[l];
+    Px* __restrict e = e_[l].data();
+    std::fill(e_[l].begin(), e_[l].end(), Px{});
+    prolong<true>(l, u_[l + 1].data(), e);
+    const size_t components = static_cast<size_t>(level.component_count);
+    numerators_.assign(components, Sum{});
+    denominators_.assign(components, Sum{});
+    for (int y = 0; y < level.height; ++y) {
+      for (int x = 0; x < level.width; ++x) {
+        const int p = level.index(x, y);
+        const int k = level.component[p];
+        if (k < 0) continue;
+        // -residualAt(e) is A e at a free pixel (e is 0 at Dirichlet pixels).
+        accumulate(numerators_[k], residualAt(level, u, f, p) * e[p]);
+        accumulate(denominators_[k], -residualAt(level, e, nullptr, p) * e[p]);
+      }
+    }
+    factors_.resize(components);
+    for (size_t k = 0; k < components; ++k) {
+      for (int c = 0; c < C; ++c) {
+        const double den = denominators_[k][c];
+        setChannel(factors_[k], c, den > 0.0 ? static_cast<float>(numerators_[k][c] / den) : 0.0f);
+      }
+    }
+    for (int y = 0; y < level.height; ++y) {
+      for (int x = 0; x < level.width; ++x) {
+        const int p = level.index(x, y);
+        const int k = level.component[p];
+        if (k >= 0) u[p] += factors_[k] * e[p];
+      }
+    }
   }
 
   // Red-black Gauss-Seidel on the free pixels: u_p = (f_p + sum w u_q) / sum w. The black
@@ -284,6 +432,21 @@ class Multigrid {
   MultigridOptions options_;
   std::vector<Level> levels_;
   std::vector<Field> u_, f_;
+  std::vector<Field> e_;  // correction scratch per level
+  // Dot products per free component, in double: a component can have 10^5 pixels.
+  using Sum = std::array<double, C>;
+  static void accumulate(Sum& sum, const Px& value) {
+    for (int c = 0; c < C; ++c) sum[c] += channel(value, c);
+  }
+  int cycled_ = 0;
+  std::vector<Sum> numerators_, denominators_;  // per free component (applyCorrection)
+  std::vector<Px> factors_;
+  struct Sums {  // accelerate's dot products (r is the residual after the cycle)
+    Sum d_ad{}, r_d{}, ad_ad{}, r_ad{}, r_r{}, s_ad{}, s_as{}, r_s{}, as_ad{}, as_as{}, r_as{};
+  };
+  Field previous_, step_, a_step_;  // accelerate: finest cycled level's update, step, A step
+  std::vector<Sums> sums_;
+  std::vector<Px> step_factors_;
 };
 
 }  // namespace

@@ -67,6 +67,34 @@ void makeLevel(const GridProblem& problem, Level& level) {
   }
 }
 
+void labelFreeComponents(Level& level) {
+  level.component.assign(level.size, -1);
+  level.component_count = 0;
+  std::vector<int> stack;
+  const int s = level.stride;
+  for (int y = 0; y < level.height; ++y) {
+    for (int x = 0; x < level.width; ++x) {
+      const int start = level.index(x, y);
+      if ((level.mask[start] & kFixed) || level.component[start] >= 0) continue;
+      const int label = level.component_count++;
+      level.component[start] = label;
+      stack.assign(1, start);
+      while (!stack.empty()) {
+        const int p = stack.back();
+        stack.pop_back();
+        const std::uint8_t m = level.mask[p];
+        for (const auto& [link, q] :
+             {std::pair{kLeft, p - 1}, {kRight, p + 1}, {kUp, p - s}, {kDown, p + s}}) {
+          // A link to a Dirichlet pixel does not join components (it is a constant there).
+          if (!(m & link) || (level.mask[q] & kFixed) || level.component[q] >= 0) continue;
+          level.component[q] = label;
+          stack.push_back(q);
+        }
+      }
+    }
+  }
+}
+
 void prolongationTable(int fine, int coarse, std::vector<int>& near, std::vector<int>& neighbour) {
   near.resize(fine);
   neighbour.resize(fine);

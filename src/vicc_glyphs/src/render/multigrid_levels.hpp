@@ -84,6 +84,10 @@ struct Level {
     float weight;
   };
   std::vector<Redirect> residual_redirects;
+  // Per pixel: the connected component of free pixels (over links) it belongs to, -1 at
+  // Dirichlet pixels and in the ghost border; see labelFreeComponents.
+  std::vector<int> component;
+  int component_count = 0;
   render_detail::PixelVector<std::uint8_t> pending;  // scratch of prolongationSources
   std::vector<int> irregular;                        // ditto
 
@@ -92,6 +96,11 @@ struct Level {
 
 /// Converts `problem` into `level` (reusing its memory).
 void makeLevel(const GridProblem& problem, Level& level);
+
+/// Labels the connected components of the free pixels of `level` (level.component). The
+/// Laplacian restricted to the free pixels is block-diagonal over these components, so the
+/// V-cycle can scale its coarse-grid correction on each one separately (see multigrid.cpp).
+void labelFreeComponents(Level& level);
 
 /// Cell-centred bilinear interpolation: fine cell i lies a quarter cell from coarse cell i/2
 /// towards its neighbour i/2 -/+ 1 (clamped at the border).
