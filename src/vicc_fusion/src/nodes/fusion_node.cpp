@@ -2,8 +2,10 @@
 #include <ros/ros.h>
 
 #include "vicc_fusion/ros/fusion_ros.hpp"
+#include "vicc_tracking/frame_memory.hpp"
 
 int main(int argc, char** argv) {
+  vicc_tracking::keepFreedFrameMemory();
   ros::init(argc, argv, "fusion");
   ros::NodeHandle nh;
   ros::NodeHandle private_nh("~");

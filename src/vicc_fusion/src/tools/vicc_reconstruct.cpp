@@ -8,6 +8,7 @@
 #include "reconstruct_report.hpp"
 #include "vicc_fusion/frame_to_model.hpp"
 #include "vicc_fusion/surfel_io.hpp"
+#include "vicc_tracking/frame_memory.hpp"
 #include "vicc_tracking/ros/conversions.hpp"
 #include "vicc_tracking/ros/rig_bag.hpp"
 #include "vicc_tracking/tracker.hpp"
@@ -251,6 +252,7 @@ class Reconstruction {
 }  // namespace
 
 int main(int argc, char** argv) {
+  vicc_tracking::keepFreedFrameMemory();
   vicc_fusion::ReconstructOptions options;
   try {
     if (!vicc_fusion::parseReconstructOptions(argc, argv, options, std::cout)) return 0;

@@ -2,9 +2,11 @@
 // class in a nodelet manager.
 #include <ros/ros.h>
 
+#include "vicc_tracking/frame_memory.hpp"
 #include "vicc_tracking/ros/tracker_ros.hpp"
 
 int main(int argc, char** argv) {
+  vicc_tracking::keepFreedFrameMemory();
   ros::init(argc, argv, "tracker");
   ros::NodeHandle nh;
   ros::NodeHandle private_nh("~");
