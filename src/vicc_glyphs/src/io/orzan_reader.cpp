@@ -18,17 +18,12 @@ using io_detail::requireDouble;
 using io_detail::requireInt;
 using tinyxml2::XMLElement;
 
-constexpr int kMaxImageSide = 100000;
-
 class OrzanReader {
  public:
   explicit OrzanReader(std::string source) : source_(std::move(source)) {}
 
   DiffusionCurveImage read(const std::string& text) {
-    // Reject huge files before building a DOM for them.
-    if (io_detail::countOccurrences(text, "<control_point ") > kMaxControlPointsPerFile) {
-      throw FormatError(source_, "", tooManyPoints());
-    }
+    io_detail::rejectTooManyControlPoints(text, source_);
     tinyxml2::XMLDocument document;
     io_detail::parseXmlDocument(document, text, source_);
     const XMLElement* root = document.RootElement();
@@ -36,15 +31,7 @@ class OrzanReader {
       throw FormatError(source_, "root", "expected a <curve_set> root element");
     }
     DiffusionCurveImage image;
-    image.width = requireInt(*root, "image_width", source_, "curve_set");
-    image.height = requireInt(*root, "image_height", source_, "curve_set");
-    if (image.width <= 0 || image.height <= 0 || image.width > kMaxImageSide ||
-        image.height > kMaxImageSide) {
-      throw FormatError(source_, "curve_set",
-                        "image size " + std::to_string(image.width) + "x" +
-                            std::to_string(image.height) + " outside 1.." +
-                            std::to_string(kMaxImageSide));
-    }
+    io_detail::requireImageSize(*root, source_, "curve_set", image.width, image.height);
     for (const XMLElement* curve = root->FirstChildElement("curve"); curve;
          curve = curve->NextSiblingElement("curve")) {
       image.curves.push_back(readCurve(*curve, "curve " + std::to_string(image.curves.size())));
@@ -56,11 +43,6 @@ class OrzanReader {
   }
 
  private:
-  std::string tooManyPoints() const {
-    return "more than " + std::to_string(kMaxControlPointsPerFile) +
-           " control points (limit per file)";
-  }
-
   // The nb_* attributes are optional; when present they must match, which catches truncation.
   void checkDeclaredCount(const XMLElement& element, const char* name, std::size_t actual,
                           const std::string& place) const {
@@ -115,7 +97,7 @@ class OrzanReader {
     for (const XMLElement* point = set.FirstChildElement("control_point"); point;
          point = point->NextSiblingElement("control_point")) {
       if (++total_points_ > kMaxControlPointsPerFile) {
-        throw FormatError(source_, place, tooManyPoints());
+        throw FormatError(source_, place, io_detail::tooManyControlPointsMessage());
       }
       const std::string point_place =
           place + " control point " + std::to_string(curve.control_points.size());

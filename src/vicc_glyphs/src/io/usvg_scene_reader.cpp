@@ -18,7 +18,6 @@ using io_detail::requireDouble;
 using io_detail::requireInt;
 using tinyxml2::XMLElement;
 
-constexpr int kMaxImageSide = 100000;
 constexpr double kByteColorScale = 255.0;
 constexpr const char* kBarrierBoundary = "Neumann";
 
@@ -33,10 +32,7 @@ class UsvgSceneReader {
   explicit UsvgSceneReader(std::string source) : source_(std::move(source)) {}
 
   DiffusionCurveImage read(const std::string& text) {
-    // Reject huge files before building a DOM for them.
-    if (io_detail::countOccurrences(text, "<control_point ") > kMaxControlPointsPerFile) {
-      throw FormatError(source_, "", tooManyPoints());
-    }
+    io_detail::rejectTooManyControlPoints(text, source_);
     tinyxml2::XMLDocument document;
     io_detail::parseXmlDocument(document, text, source_);
     const XMLElement* root = document.RootElement();
@@ -46,15 +42,7 @@ class UsvgSceneReader {
     // <poisson_curve_set> and <mesh_set> have no counterpart in our representation; they are
     // skipped (documented in usvg_scene_xml.hpp), only the diffusion curves are read.
     DiffusionCurveImage image;
-    image.width = requireInt(*root, "image_width", source_, "scene");
-    image.height = requireInt(*root, "image_height", source_, "scene");
-    if (image.width <= 0 || image.height <= 0 || image.width > kMaxImageSide ||
-        image.height > kMaxImageSide) {
-      throw FormatError(source_, "scene",
-                        "image size " + std::to_string(image.width) + "x" +
-                            std::to_string(image.height) + " outside 1.." +
-                            std::to_string(kMaxImageSide));
-    }
+    io_detail::requireImageSize(*root, source_, "scene", image.width, image.height);
     if (const XMLElement* set = root->FirstChildElement("curve_set")) {
       for (const XMLElement* curve : children(*set, "curve", *set, "nb_curves", "curve_set")) {
         image.curves.push_back(readCurve(*curve, "curve " + std::to_string(image.curves.size())));
@@ -66,11 +54,6 @@ class UsvgSceneReader {
   }
 
  private:
-  std::string tooManyPoints() const {
-    return "more than " + std::to_string(kMaxControlPointsPerFile) +
-           " control points (limit per file)";
-  }
-
   // The child elements `name` of `parent`. As in small-usvg, a count attribute on `owner`
   // (nb_*) says how many to read: fewer present is an error (truncation), extra ones are ignored
   // (the vendored ladybug's curve 55 declares 5 right colours and lists 6). Without the
@@ -132,7 +115,7 @@ class UsvgSceneReader {
     for (const XMLElement* point :
          children(set, "control_point", curve_element, "nb_control_points", place)) {
       if (++total_points_ > kMaxControlPointsPerFile) {
-        throw FormatError(source_, place, tooManyPoints());
+        throw FormatError(source_, place, io_detail::tooManyControlPointsMessage());
       }
       const std::string point_place =
           place + " control point " + std::to_string(curve.control_points.size());

@@ -61,5 +61,28 @@ int requireInt(const tinyxml2::XMLElement& element, const char* name, const std:
   return value;
 }
 
+std::string tooManyControlPointsMessage() {
+  return "more than " + std::to_string(kMaxControlPointsPerFile) +
+         " control points (limit per file)";
+}
+
+void rejectTooManyControlPoints(const std::string& text, const std::string& source) {
+  if (countOccurrences(text, "<control_point ") > kMaxControlPointsPerFile) {
+    throw FormatError(source, "", tooManyControlPointsMessage());
+  }
+}
+
+void requireImageSize(const tinyxml2::XMLElement& root, const std::string& source,
+                      const std::string& place, int& width, int& height) {
+  constexpr int kMaxImageSide = 100000;
+  width = requireInt(root, "image_width", source, place);
+  height = requireInt(root, "image_height", source, place);
+  if (width <= 0 || height <= 0 || width > kMaxImageSide || height > kMaxImageSide) {
+    throw FormatError(source, place,
+                      "image size " + std::to_string(width) + "x" + std::to_string(height) +
+                          " outside 1.." + std::to_string(kMaxImageSide));
+  }
+}
+
 }  // namespace io_detail
 }  // namespace vicc_glyphs

@@ -23,5 +23,15 @@ double requireDouble(const tinyxml2::XMLElement& element, const char* name,
 int requireInt(const tinyxml2::XMLElement& element, const char* name, const std::string& source,
                const std::string& place);
 
+/// "more than N control points (limit per file)", N = kMaxControlPointsPerFile.
+std::string tooManyControlPointsMessage();
+/// Throws FormatError when `text` holds more <control_point> elements than allowed; checked
+/// before a DOM is built for a huge file.
+void rejectTooManyControlPoints(const std::string& text, const std::string& source);
+
+/// image_width and image_height of a curve file's root element, each within 1..100000.
+void requireImageSize(const tinyxml2::XMLElement& root, const std::string& source,
+                      const std::string& place, int& width, int& height);
+
 }  // namespace io_detail
 }  // namespace vicc_glyphs
