@@ -19,6 +19,7 @@
 #include "vicc_fusion/surfel_io.hpp"
 #include "vicc_tracking/ros/conversions.hpp"
 #include "vicc_tracking/tracker.hpp"
+#include "wait_for_recording_end.hpp"
 
 namespace {
 
@@ -71,18 +72,7 @@ class FusionNodeTest : public ::testing::Test {
 
 TEST_F(FusionNodeTest, ModelLiesOnTheTrueSurface) {
   // Wait for the recording to end: no new status for 3 s after the last one.
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(150.0);
-  ros::WallTime last_change = ros::WallTime::now();
-  size_t last_count = 0;
-  while (ros::ok() && ros::WallTime::now() < deadline) {
-    ros::spinOnce();
-    ros::WallDuration(0.02).sleep();
-    if (statuses_.size() != last_count) {
-      last_count = statuses_.size();
-      last_change = ros::WallTime::now();
-    }
-    if (last_count > 20 && ros::WallTime::now() - last_change > ros::WallDuration(3.0)) break;
-  }
+  vicc_test::waitForRecordingEnd([this] { return statuses_.size(); });
   ASSERT_GT(odometry_.size(), 40u) << "too few tracked poses";
   ASSERT_GT(clouds_, 1) << "the model was not published";
 

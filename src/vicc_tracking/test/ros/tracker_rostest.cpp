@@ -17,6 +17,7 @@
 
 #include "vicc_tracking/ros/conversions.hpp"
 #include "vicc_tracking/tracker.hpp"
+#include "wait_for_recording_end.hpp"
 
 namespace {
 
@@ -91,18 +92,7 @@ class TrackerNodeTest : public ::testing::Test {
 TEST_F(TrackerNodeTest, FollowsGroundTruthDespiteBadInput) {
   // short_test: 2 s still phase + ~4 s of motion at 15 Hz. Wait for the recording to end:
   // no new pose for 3 s after the last one (or the overall limit).
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(150.0);
-  ros::WallTime last_change = ros::WallTime::now();
-  size_t last_count = 0;
-  while (ros::ok() && ros::WallTime::now() < deadline) {
-    ros::spinOnce();
-    ros::WallDuration(0.02).sleep();
-    if (poses_.size() != last_count) {
-      last_count = poses_.size();
-      last_change = ros::WallTime::now();
-    }
-    if (last_count > 20 && ros::WallTime::now() - last_change > ros::WallDuration(3.0)) break;
-  }
+  vicc_test::waitForRecordingEnd([this] { return poses_.size(); });
   ASSERT_GT(injected_, 3) << "the bad-input injection did not run";
   ASSERT_GT(poses_.size(), 40u) << "too few tracked poses published";
 
