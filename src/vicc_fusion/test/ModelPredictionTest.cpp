@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "synthetic_frames.hpp"
 #include "vicc_fusion/model_prediction.hpp"
 #include "vicc_fusion/surfel_fusion.hpp"
@@ -50,6 +52,41 @@ TEST(ModelPredictionTest, SplatsFillThePixelsBetweenSurfelCentres) {
     for (int u = 24; u < 40; ++u) holes += !level.hasNormal(v * 64 + u);
   }
   EXPECT_EQ(holes, 0);
+}
+
+TEST(ModelPredictionTest, ADiscCoversExactlyThePixelCentresInsideIt) {
+  // One fronto-parallel disc at a fractional pixel position: its footprint is a circle of
+  // radius r f / z. Small footprints take the 3x3 fast path, large ones the row scan; both
+  // must cover exactly the pixel centres inside the circle, at the disc's depth.
+  const vicc_tracking::PinholeIntrinsics k = smallCamera();
+  ModelPredictionConfig config = predictionConfig();
+  config.splat_radius_scale = 1.0;
+  for (const double radius_px : {0.8, 1.3, 1.45, 2.2, 3.7}) {
+    for (const double u0 : {31.3, 0.4}) {  // inside, and at the image border
+      const double v0 = 23.62, z = 0.5;
+      Surfel surfel;
+      surfel.position = Eigen::Vector3f((u0 - k.cx) * z / k.fx, (v0 - k.cy) * z / k.fy, z);
+      surfel.normal = -Eigen::Vector3f::UnitZ();
+      surfel.radius = static_cast<float>(radius_px * z / k.fx);
+      surfel.confidence = 5.f;
+      const auto level = renderModel({surfel}, Eigen::Isometry3d::Identity(), k, config);
+      int expected = 0;
+      for (int v = 0; v < k.height; ++v) {
+        for (int u = 0; u < k.width; ++u) {
+          const double r2 = ((u - u0) * (u - u0) + (v - v0) * (v - v0)) / (radius_px * radius_px);
+          if (std::abs(r2 - 1.0) < 1e-3) continue;  // on the rim: rounding may go either way
+          const bool inside = r2 < 1.0;
+          expected += inside;
+          ASSERT_EQ(level.hasNormal(v * k.width + u), inside)
+              << "radius " << radius_px << " px, centre u " << u0 << ", pixel " << u << "," << v;
+          if (inside) {
+            ASSERT_NEAR(level.vertices[v * k.width + u].z(), z, 1e-5);
+          }
+        }
+      }
+      EXPECT_EQ(level.valid_normals, expected);
+    }
+  }
 }
 
 TEST(ModelPredictionTest, DrawsOnlyStableFrontFacingSurfels) {

@@ -11,6 +11,7 @@
 #include "vicc_fusion/index_map.hpp"
 #include "vicc_fusion/surfel.hpp"
 #include "vicc_fusion/surfel_fusion_config.hpp"
+#include "vicc_fusion/surfel_order.hpp"
 #include "vicc_tracking/depth_preprocessing.hpp"
 
 namespace vicc_fusion {
@@ -63,6 +64,7 @@ class SurfelFusion {
   float min_normal_cosine_;
   SurfelVector surfels_;
   IndexMap index_map_;
+  SurfelOrder surfel_order_;
   std::vector<float> pixel_weights_;
   int weights_width_ = 0, weights_height_ = 0;
   int frame_index_ = 0;

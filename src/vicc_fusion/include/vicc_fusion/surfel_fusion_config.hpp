@@ -19,6 +19,9 @@ struct SurfelFusionConfig {
                                     ///< in space the camera sees through
   double max_view_distance = 4.0;   ///< m; no fusion beyond (pico flexx range)
   int max_surfels = 1000000;        ///< memory bound: ~48 MB at 48 bytes per surfel
+  /// Frames between re-sorts of the model into the camera's pixel order (0 = never). Speed
+  /// only: the per-frame passes then read the model sequentially instead of at random.
+  int sort_interval = 4;
   void validate() const;            ///< throws std::invalid_argument naming the field
 };
 

@@ -33,19 +33,45 @@ struct SplatPixel {
   float inv_depth_sum = 0.f;
   Eigen::Vector3f normal_sum = Eigen::Vector3f::Zero();
 
+  /// Adds a disc's contribution; w == 0 leaves the pixel untouched. Written with selects
+  /// instead of branches: whether a disc hides, joins or misses the front is data-dependent
+  /// and mispredicts often.
   void add(float inv_depth, float w, const Eigen::Vector3f& normal, float blend) {
-    if (inv_depth > front + blend) {  // a new front surface hides what was there
-      front = inv_depth;
-      weight = w;
-      inv_depth_sum = w * inv_depth;
-      normal_sum = w * normal;
-    } else if (inv_depth >= front - blend) {
-      front = std::max(front, inv_depth);
-      weight += w;
-      inv_depth_sum += w * inv_depth;
-      normal_sum += w * normal;
-    }
+    const bool covers = w > 0.f;
+    const bool hides = covers && inv_depth > front + blend;   // a new front surface
+    const bool joins = covers && inv_depth >= front - blend;  // within the blend (or hides)
+    const float keep = hides ? 0.f : 1.f;
+    const float take = joins ? w : 0.f;
+    front = joins ? std::max(front, inv_depth) : front;
+    weight = weight * keep + take;
+    inv_depth_sum = inv_depth_sum * keep + take * inv_depth;
+    normal_sum = normal_sum * keep + take * normal;
   }
+};
+
+// std::floor and std::ceil are library calls on baseline x86-64 (no SSE4.1 rounding); these
+// run twice per splatted row. Arguments stay within a few pixels of the image.
+int floorToInt(float x) {
+  const int truncated = static_cast<int>(x);
+  return truncated > x ? truncated - 1 : truncated;
+}
+int ceilToInt(float x) {
+  const int truncated = static_cast<int>(x);
+  return truncated < x ? truncated + 1 : truncated;
+}
+
+/// The splat accumulator with a one-pixel border, so that the 3x3 fast path needs no bounds
+/// checks at the image edge (the border is dropped afterwards).
+class SplatBuffer {
+ public:
+  SplatBuffer(int width, int height)
+      : stride_(width + 2), pixels_(static_cast<size_t>(width + 2) * (height + 2)) {}
+  /// Row v of the image; valid for u in -1..width.
+  SplatPixel* row(int v) { return &pixels_[static_cast<size_t>(v + 1) * stride_ + 1]; }
+
+ private:
+  int stride_;
+  std::vector<SplatPixel> pixels_;  // one array: a pixel's sums share a cache line
 };
 
 }  // namespace
@@ -56,7 +82,7 @@ vicc_tracking::DepthLevel renderModel(const SurfelVector& surfels,
                                       const ModelPredictionConfig& config) {
   const int width = intrinsics.width, height = intrinsics.height;
   const size_t count = static_cast<size_t>(width) * height;
-  std::vector<SplatPixel> buffer(count);  // one array: a pixel's sums share a cache line
+  SplatBuffer buffer(width, height);
 
   const Eigen::Isometry3f map_to_camera = camera_pose.cast<float>().inverse();
   const Eigen::Matrix3f rotation = map_to_camera.linear();
@@ -116,7 +142,12 @@ vicc_tracking::DepthLevel renderModel(const SurfelVector& surfels,
     const int v_max = std::min(height - 1, static_cast<int>(v0 + extent_v + 0.5f));
     // Per pixel: (s, t) = [A B]^-1 (du, dv) are the pixel centre's disc coordinates (inside
     // when s^2 + t^2 <= 1); 1/depth is affine in (u, v) on the plane: 1/z = n.ray(u, v) / n.c.
+    // Along a row, s and t are affine in du, so r^2 = s^2 + t^2 is a quadratic whose roots
+    // bound the covered pixels: only those are visited (most of the box lies outside).
     const float inv_det = 1.f / determinant;
+    const float s_du = by * inv_det, t_du = -ay * inv_det;
+    const float r2_a = s_du * s_du + t_du * t_du;  // > 0: the footprint is not degenerate
+    const float inv_2a = 0.5f / r2_a;
     const float inv_facing = 1.f / facing;
     const float depth_du = normal.x() * inv_fx * inv_facing;
     const float depth_dv = normal.y() * inv_fy * inv_facing;
@@ -124,19 +155,45 @@ vicc_tracking::DepthLevel renderModel(const SurfelVector& surfels,
         (normal.z() - normal.x() * intrinsics.cx * inv_fx - normal.y() * intrinsics.cy * inv_fy) *
         inv_facing;
     const float blend_inverse = blend * inv_z * inv_z;  // d(1/z) = dz / z^2
+    const float confidence = surfel.confidence;
+    const auto splat = [&](SplatPixel* row, int u, float row_inv_depth, float r2) {
+      const float inv_depth = row_inv_depth + depth_du * u;
+      const float w = (r2 <= 1.f && inv_depth > 0.f) ? confidence * (1.1f - r2) : 0.f;
+      row[u].add(inv_depth, w, normal, blend_inverse);
+    };
+    const int center_u = floorToInt(u0 + 0.5f), center_v = floorToInt(v0 + 0.5f);
+    if (extent_u < 1.5f && extent_v < 1.5f && center_u >= 0 && center_u < width && center_v >= 0 &&
+        center_v < height) {
+      // Most footprints are under 1.5 px: all pixel centres they cover lie in the 3x3 block
+      // around the centre's pixel. Fixed trip counts, no per-pixel branches.
+      for (int v = center_v - 1; v <= center_v + 1; ++v) {
+        const float dv = v - v0;
+        const float s_0 = -bx * dv * inv_det, t_0 = ax * dv * inv_det;
+        const float row_inv_depth = depth_0 + depth_dv * v;
+        SplatPixel* row = buffer.row(v);
+        for (int u = center_u - 1; u <= center_u + 1; ++u) {
+          const float du = u - u0;
+          const float s_u = s_0 + s_du * du, t_u = t_0 + t_du * du;
+          splat(row, u, row_inv_depth, s_u * s_u + t_u * t_u);
+        }
+      }
+      continue;
+    }
     for (int v = v_min; v <= v_max; ++v) {
       const float dv = v - v0;
+      const float s_0 = -bx * dv * inv_det, t_0 = ax * dv * inv_det;
+      const float r2_b = 2.f * (s_0 * s_du + t_0 * t_du);
+      const float r2_c = s_0 * s_0 + t_0 * t_0;
+      const float discriminant = r2_b * r2_b - 4.f * r2_a * (r2_c - 1.f);
+      if (discriminant < 0.f) continue;  // the row misses the ellipse
+      const float root = std::sqrt(discriminant);
+      const int first = std::max(u_min, ceilToInt(u0 + (-r2_b - root) * inv_2a));
+      const int last = std::min(u_max, floorToInt(u0 + (-r2_b + root) * inv_2a));
       const float row_inv_depth = depth_0 + depth_dv * v;
-      for (int u = u_min; u <= u_max; ++u) {
+      SplatPixel* row = buffer.row(v);
+      for (int u = first; u <= last; ++u) {
         const float du = u - u0;
-        const float s = (by * du - bx * dv) * inv_det;
-        const float t = (ax * dv - ay * du) * inv_det;
-        const float r2 = s * s + t * t;
-        if (r2 > 1.f) continue;
-        const float inv_depth = row_inv_depth + depth_du * u;
-        if (inv_depth <= 0.f) continue;
-        buffer[static_cast<size_t>(v) * width + u].add(inv_depth, surfel.confidence * (1.1f - r2),
-                                                       normal, blend_inverse);
+        splat(row, u, row_inv_depth, std::min(1.f, (r2_a * du + r2_b) * du + r2_c));
       }
     }
   }
@@ -149,23 +206,26 @@ vicc_tracking::DepthLevel renderModel(const SurfelVector& surfels,
   level.radii.assign(count, 0.f);
   float* depth = level.depth.ptr<float>(0);
   const float mean_focal = 0.5f * (intrinsics.fx + intrinsics.fy);
-  for (size_t i = 0; i < count; ++i) {
-    const SplatPixel& pixel = buffer[i];
-    if (pixel.weight <= 0.f) continue;
-    const float z = pixel.weight / pixel.inv_depth_sum;
-    const int u = static_cast<int>(i % width), v = static_cast<int>(i / width);
-    const Eigen::Vector3f point((u - intrinsics.cx) * inv_fx * z, (v - intrinsics.cy) * inv_fy * z,
-                                z);
-    const float normal_length = pixel.normal_sum.norm();
-    if (normal_length <= 0.f) continue;
-    const Eigen::Vector3f normal = pixel.normal_sum / normal_length;
-    level.vertices[i] = point;
-    level.normals[i] = normal;
-    depth[i] = point.z();
-    const float cos_view = std::max(0.26f, std::abs(normal.dot(point.normalized())));
-    level.radii[i] = std::sqrt(2.f) * 0.5f * point.z() / mean_focal / cos_view;
-    ++level.valid_vertices;
-    ++level.valid_normals;
+  for (int v = 0; v < height; ++v) {
+    const SplatPixel* row = buffer.row(v);
+    for (int u = 0; u < width; ++u) {
+      const SplatPixel& pixel = row[u];
+      if (pixel.weight <= 0.f) continue;
+      const float normal_length = pixel.normal_sum.norm();
+      if (normal_length <= 0.f) continue;
+      const float z = pixel.weight / pixel.inv_depth_sum;
+      const Eigen::Vector3f point((u - intrinsics.cx) * inv_fx * z,
+                                  (v - intrinsics.cy) * inv_fy * z, z);
+      const Eigen::Vector3f normal = pixel.normal_sum / normal_length;
+      const size_t i = static_cast<size_t>(v) * width + u;
+      level.vertices[i] = point;
+      level.normals[i] = normal;
+      depth[i] = point.z();
+      const float cos_view = std::max(0.26f, std::abs(normal.dot(point.normalized())));
+      level.radii[i] = std::sqrt(2.f) * 0.5f * point.z() / mean_focal / cos_view;
+      ++level.valid_vertices;
+      ++level.valid_normals;
+    }
   }
   return level;
 }

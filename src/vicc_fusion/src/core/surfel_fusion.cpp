@@ -26,6 +26,7 @@ void SurfelFusionConfig::validate() const {
   require(free_space_margin > 0.0, "free_space_margin must be > 0");
   require(max_view_distance > 0.0, "max_view_distance must be > 0");
   require(max_surfels >= 1, "max_surfels must be >= 1");
+  require(sort_interval >= 0, "sort_interval must be >= 0 (0 = never)");
 }
 
 SurfelFusion::SurfelFusion(const SurfelFusionConfig& config)
@@ -98,6 +99,9 @@ FusionFrameStats SurfelFusion::integrate(const vicc_tracking::DepthLevel& frame,
   const Eigen::Matrix3f rotation = pose.linear();
   const Eigen::Vector3f translation = pose.translation();
   const int factor = config_.supersampling;
+  if (config_.sort_interval > 0 && frame_index % config_.sort_interval == 0) {
+    surfel_order_.sortByPixel(surfels_, pose, intrinsics);
+  }
   index_map_.render(surfels_, pose, intrinsics, factor);
   const std::vector<float>& weights = pixelWeights(intrinsics);
 

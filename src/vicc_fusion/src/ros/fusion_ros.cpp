@@ -46,6 +46,7 @@ FrameToModelConfig readFrameToModelConfig(const ros::NodeHandle& private_nh) {
   readOptionalParam(private_nh, "fusion/free_space_margin", fusion.free_space_margin);
   readOptionalParam(private_nh, "fusion/max_view_distance", fusion.max_view_distance);
   readOptionalParam(private_nh, "fusion/max_surfels", fusion.max_surfels);
+  readOptionalParam(private_nh, "fusion/sort_interval", fusion.sort_interval);
   config.validate();
   return config;
 }
