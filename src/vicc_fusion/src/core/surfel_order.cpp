@@ -30,6 +30,8 @@ void SurfelOrder::sortByPixel(SurfelVector& surfels, const Eigen::Isometry3f& ca
   }
   for (size_t b = 1; b < bucket_start_.size(); ++b) bucket_start_[b] += bucket_start_[b - 1];
 
+  // Same capacity as the model: the frames after a sort append without reallocating it.
+  sorted_.reserve(surfels.capacity());
   sorted_.resize(surfels.size());
   for (size_t i = 0; i < surfels.size(); ++i) {
     sorted_[static_cast<size_t>(bucket_start_[static_cast<size_t>(keys_[i])]++)] = surfels[i];
