@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
+
+#include "vicc_tracking/simd4.hpp"
 
 namespace vicc_fusion {
 
@@ -25,16 +26,10 @@ void ModelPredictionConfig::validate() const {
 
 namespace {
 
-// Four pixels of a row at once (GCC/Clang vector extensions: SSE on x86-64, NEON on ARM).
-using Float4 = float __attribute__((vector_size(16)));
-using Mask4 = int __attribute__((vector_size(16)));
-
-Float4 load4(const float* p) {
-  Float4 v;
-  std::memcpy(&v, p, sizeof(v));
-  return v;
-}
-void store4(float* p, Float4 v) { std::memcpy(p, &v, sizeof(v)); }
+using vicc_tracking::simd::Float4;
+using vicc_tracking::simd::load4;
+using vicc_tracking::simd::Mask4;
+using vicc_tracking::simd::store4;
 
 /// Per pixel, the discs covering it: the front one and those within the blend depth behind
 /// it. All lie on the pixel's ray, so their (inverse) depth is all it takes to place the

@@ -7,10 +7,15 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
+#include "vicc_tracking/simd4.hpp"
+
 namespace vicc_tracking {
 namespace {
 constexpr double kDegToRad = M_PI / 180.0;
-}
+using simd::Float4;
+using simd::load4;
+using simd::sum4;
+}  // namespace
 
 void IcpConfig::validate() const {
   if (iterations_per_level.empty()) {
@@ -23,8 +28,9 @@ void IcpConfig::validate() const {
   }
   if (!(max_correspondence_distance > 0.0) || !(max_normal_angle_deg > 0.0) ||
       max_normal_angle_deg > 90.0) {
-    throw std::invalid_argument("icp: max_correspondence_distance must be > 0 and "
-                                "max_normal_angle_deg in (0, 90]");
+    throw std::invalid_argument(
+        "icp: max_correspondence_distance must be > 0 and "
+        "max_normal_angle_deg in (0, 90]");
   }
   if (!(convergence_translation >= 0.0) || !(convergence_rotation_deg >= 0.0)) {
     throw std::invalid_argument("icp: convergence thresholds must be >= 0");
@@ -64,16 +70,23 @@ PointToPlaneSystem ProjectiveIcp::buildSystem(const DepthLevel& source, const De
   const int width = source.intrinsics.width;
   const int height = source.intrinsics.height;
 
-  // Accumulate the 21 upper-triangle entries of J^T J and J^T r in float per row (written
-  // out: Eigen's rankUpdate is a call per pixel here) and in double across rows.
+  // Per row: find the correspondences (scalar: projection and lookups), keep them in planes,
+  // then accumulate the 21 upper-triangle entries of J^T J and J^T r four at a time in float,
+  // and in double across rows.
   PointToPlaneSystem system;
   const float max_u = static_cast<float>(k.width) - 0.5f;
   const float max_v = static_cast<float>(k.height) - 0.5f;
+  const size_t padded = static_cast<size_t>(width) + 4;
+  std::vector<float> planes(7 * padded);
+  float* const px = planes.data();
+  float* const py = px + padded;
+  float* const pz = py + padded;
+  float* const nx = pz + padded;
+  float* const ny = nx + padded;
+  float* const nz = ny + padded;
+  float* const residuals = nz + padded;
   for (int v = 0; v < height; ++v) {
-    float row_ata[21] = {};
-    float row_atb[6] = {};
-    float row_error = 0.f;
-    int row_count = 0;
+    int n = 0;
     for (int u = 0; u < width; ++u) {
       const int index = v * width + u;
       const Eigen::Vector3f& source_normal = source.normals[index];
@@ -92,31 +105,43 @@ PointToPlaneSystem ProjectiveIcp::buildSystem(const DepthLevel& source, const De
       const Eigen::Vector3f difference = point - reference.vertices[reference_index];
       if (difference.squaredNorm() > max_distance_sq) continue;
       if ((rotation * source_normal).dot(normal) < min_normal_cosine_) continue;
+      px[n] = point.x();
+      py[n] = point.y();
+      pz[n] = point.z();
+      nx[n] = normal.x();
+      ny[n] = normal.y();
+      nz[n] = normal.z();
+      residuals[n] = normal.dot(difference);
+      ++n;
+    }
+    if (n == 0) continue;
+    for (int pad = n; pad % 4 != 0; ++pad) {  // zero normal and residual: adds nothing
+      px[pad] = py[pad] = pz[pad] = nx[pad] = ny[pad] = nz[pad] = residuals[pad] = 0.f;
+    }
 
-      // Eq. 2.7 linearised: r + (p x n) . w + n . t; p x n written out (GCC 12 reports a
-      // false array-bounds error for Eigen's SSE cross()).
-      const float residual = normal.dot(difference);
-      const float j[6] = {point.y() * normal.z() - point.z() * normal.y(),
-                          point.z() * normal.x() - point.x() * normal.z(),
-                          point.x() * normal.y() - point.y() * normal.x(),
-                          normal.x(),
-                          normal.y(),
-                          normal.z()};
+    // Eq. 2.7 linearised: r + (p x n) . w + n . t.
+    Float4 ata[21] = {};
+    Float4 atb[6] = {};
+    Float4 error = {};
+    for (int c = 0; c < n; c += 4) {
+      const Float4 x = load4(px + c), y = load4(py + c), z = load4(pz + c);
+      const Float4 a = load4(nx + c), b = load4(ny + c), d = load4(nz + c);
+      const Float4 r = load4(residuals + c);
+      const Float4 j[6] = {y * d - z * b, z * a - x * d, x * b - y * a, a, b, d};
       int entry = 0;
-      for (int r = 0; r < 6; ++r) {
-        for (int c = r; c < 6; ++c) row_ata[entry++] += j[r] * j[c];
-        row_atb[r] += j[r] * residual;
+      for (int row = 0; row < 6; ++row) {
+        for (int col = row; col < 6; ++col) ata[entry++] += j[row] * j[col];
+        atb[row] += j[row] * r;
       }
-      row_error += residual * residual;
-      ++row_count;
+      error += r * r;
     }
     int entry = 0;
-    for (int r = 0; r < 6; ++r) {
-      for (int c = r; c < 6; ++c) system.ata(r, c) += row_ata[entry++];
-      system.atb(r) += row_atb[r];
+    for (int row = 0; row < 6; ++row) {
+      for (int col = row; col < 6; ++col) system.ata(row, col) += sum4(ata[entry++]);
+      system.atb(row) += sum4(atb[row]);
     }
-    system.squared_error += row_error;
-    system.count += row_count;
+    system.squared_error += sum4(error);
+    system.count += n;
   }
   system.ata = system.ata.selfadjointView<Eigen::Upper>();
   return system;
@@ -135,7 +160,8 @@ IcpResult ProjectiveIcp::align(const DepthPyramid& source, const DepthPyramid& r
   PointToPlaneSystem last_system;
   for (int level = levels - 1; level >= 0; --level) {
     const int max_iterations =
-        config_.iterations_per_level[std::min<size_t>(level, config_.iterations_per_level.size() - 1)];
+        config_
+            .iterations_per_level[std::min<size_t>(level, config_.iterations_per_level.size() - 1)];
     const double max_distance = config_.max_correspondence_distance * std::pow(2.0, level);
     for (int iteration = 0; iteration < max_iterations; ++iteration) {
       PointToPlaneSystem system =
@@ -161,17 +187,17 @@ IcpResult ProjectiveIcp::align(const DepthPyramid& source, const DepthPyramid& r
         buildSystem(source[0], reference[0], result.pose, config_.max_correspondence_distance);
   }
   result.inliers = last_system.count;
-  result.inlier_ratio =
-      source[0].valid_normals > 0 ? static_cast<double>(last_system.count) / source[0].valid_normals
-                                  : 0.0;
+  result.inlier_ratio = source[0].valid_normals > 0
+                            ? static_cast<double>(last_system.count) / source[0].valid_normals
+                            : 0.0;
   result.residual_rms =
       last_system.count > 0 ? std::sqrt(last_system.squared_error / last_system.count) : 0.0;
   if (last_system.count >= 6) {
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eigen(last_system.ata,
                                                                            Eigen::EigenvaluesOnly);
     const double smallest = eigen.eigenvalues()(0);
-    result.condition_number =
-        smallest > 0.0 ? eigen.eigenvalues()(5) / smallest : std::numeric_limits<double>::infinity();
+    result.condition_number = smallest > 0.0 ? eigen.eigenvalues()(5) / smallest
+                                             : std::numeric_limits<double>::infinity();
   }
 
   const Eigen::Isometry3d jump = initial_guess.inverse() * result.pose;
