@@ -3,6 +3,7 @@
 if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(vicc_tracking_core_test
     test/core/EkfTest.cpp
+    test/core/InitStrategyTest.cpp
     test/core/IcpTest.cpp
     test/core/DepthPreprocessingTest.cpp)
   target_compile_options(vicc_tracking_core_test PRIVATE ${VICC_WARNINGS})

@@ -28,6 +28,10 @@ struct EkfConfig {
   double measurement_noise_position = 1e-5;
   double measurement_noise_base = 1e-13;
   double initial_covariance = 1e-4;
+  /// Virtual measurements (5.4.2): true = the velocity at the newest ICP pose from the last
+  /// two ICP positions and the IMU steps between them (velocityAtIntervalEnd); false = the
+  /// backward difference of Eq. 5.10 as printed, which lags half an inter-frame interval.
+  bool imu_aided_virtual_velocity = true;
   void validate() const;
 };
 

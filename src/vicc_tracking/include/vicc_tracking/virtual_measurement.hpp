@@ -2,6 +2,7 @@
 // Virtual measurements of thesis 5.4.2: motion extrapolated from the last ICP poses.
 
 #include <deque>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -35,6 +36,9 @@ class PoseHistory {
 
 /// z_{i+1} = [q^e v^e p^e q_b^ICP] (Eq. 5.9) from Eq. 5.10-5.15, for the interval of length
 /// interval_dt that starts at the newest pose in history.
-Vector14d virtualMeasurement(const PoseHistory& history, double interval_dt);
+/// velocities: the velocity at the newest and at the one-older pose (newest first), when
+/// known better than by the backward differences of Eq. 5.10 (see velocityAtIntervalEnd).
+Vector14d virtualMeasurement(const PoseHistory& history, double interval_dt,
+                             const std::vector<Eigen::Vector3d>& velocities = {});
 
 }  // namespace vicc_tracking

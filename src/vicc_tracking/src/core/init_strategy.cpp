@@ -76,18 +76,32 @@ class ImuIntegrationInit : public InitStrategy {
  public:
   explicit ImuIntegrationInit(const InitContext& context) : context_(context) {}
   InitStrategyType type() const override { return InitStrategyType::kImu; }
-  Eigen::Isometry3d predict(double, const std::vector<ImuStep>& steps) override {
+  void start(double stamp, const Eigen::Isometry3d& imu_pose) override {
+    InitStrategy::start(stamp, imu_pose);
+    previous_steps_.clear();
+  }
+
+  Eigen::Isometry3d predict(double stamp, const std::vector<ImuStep>& steps) override {
     StrapdownState state;
     state.orientation = toEigen(history_.back().orientation);
     state.position = history_.back().position;
-    // The IMU alone cannot know the velocity: take it from the last two tracked positions.
+    // The IMU alone cannot know the velocity. The last two tracked positions and the IMU
+    // steps recorded between them do: the backward difference of the positions alone is the
+    // velocity half an interval ago, which under hand-held accelerations misses by centimetres.
     if (history_.size() >= 2) {
-      const double dt = history_.back().stamp - history_.back(1).stamp;
-      if (dt > 0.0) state.velocity = (history_.back().position - history_.back(1).position) / dt;
+      const StampedPose& older = history_.back(1);
+      const StampedPose& newer = history_.back();
+      const bool steps_cover_it = previous_interval_end_ == newer.stamp;
+      state.velocity = velocityAtIntervalEnd(
+          toEigen(older.orientation), older.position, newer.position, newer.stamp - older.stamp,
+          steps_cover_it ? previous_steps_ : std::vector<ImuStep>{}, context_.calibration,
+          context_.gravity_map);
     }
     for (const ImuStep& step : steps) {
       state = strapdownStep(state, step, context_.calibration, context_.gravity_map);
     }
+    previous_steps_ = steps;
+    previous_interval_end_ = stamp;
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
     pose.linear() = state.orientation.toRotationMatrix();
     pose.translation() = state.position;
@@ -96,6 +110,8 @@ class ImuIntegrationInit : public InitStrategy {
 
  private:
   InitContext context_;
+  std::vector<ImuStep> previous_steps_;  ///< the IMU steps of the interval predicted last
+  double previous_interval_end_ = -1.0;  ///< stamp that interval ended at
 };
 
 /// The thesis's method (5.4): EKF prediction over the interval, correction with the virtual
@@ -103,18 +119,39 @@ class ImuIntegrationInit : public InitStrategy {
 class EkfInit : public InitStrategy {
  public:
   explicit EkfInit(const InitContext& context)
-      : ekf_(context.ekf, context.calibration, context.gravity_map) {}
+      : context_(context), ekf_(context.ekf, context.calibration, context.gravity_map) {}
   InitStrategyType type() const override { return InitStrategyType::kEkf; }
 
   void start(double stamp, const Eigen::Isometry3d& imu_pose) override {
     InitStrategy::start(stamp, imu_pose);
     ekf_.start(history_.back().orientation);
+    previous_steps_.clear();
+    previous_interval_end_ = -1.0;
+    velocities_.clear();
   }
 
   Eigen::Isometry3d predict(double stamp, const std::vector<ImuStep>& steps) override {
     for (const ImuStep& step : steps) ekf_.predict(step);
     const StampedPose& previous = history_.back();
-    ekf_.correct(virtualMeasurement(history_, stamp - previous.stamp));
+    // Eq. 5.10 takes the backward difference of the last two ICP positions for the velocity
+    // at the newest pose, but that is the mean velocity over the last interval: it lags half
+    // an interval, and Eq. 5.14-5.15 extrapolate the lag over the next interval. The IMU steps
+    // recorded between the two poses give the velocity at the newest pose itself.
+    if (context_.ekf.imu_aided_virtual_velocity && history_.size() >= 2 &&
+        previous_interval_end_ == previous.stamp) {
+      const StampedPose& older = history_.back(1);
+      velocities_.insert(velocities_.begin(),
+                         velocityAtIntervalEnd(toEigen(older.orientation), older.position,
+                                               previous.position, previous.stamp - older.stamp,
+                                               previous_steps_, context_.calibration,
+                                               context_.gravity_map));
+      if (velocities_.size() > 2) velocities_.pop_back();
+    } else {
+      velocities_.clear();
+    }
+    ekf_.correct(virtualMeasurement(history_, stamp - previous.stamp, velocities_));
+    previous_steps_ = steps;
+    previous_interval_end_ = stamp;
     const EkfState& state = ekf_.state();
     StampedPose guess;
     guess.stamp = stamp;
@@ -127,7 +164,11 @@ class EkfInit : public InitStrategy {
   const InitializationEkf& filter() const { return ekf_; }
 
  private:
+  InitContext context_;
   InitializationEkf ekf_;
+  std::vector<ImuStep> previous_steps_;  ///< the IMU steps of the interval predicted last
+  double previous_interval_end_ = -1.0;  ///< stamp that interval ended at
+  std::vector<Eigen::Vector3d> velocities_;  ///< at the newest and the one-older pose
 };
 
 }  // namespace

@@ -27,4 +27,19 @@ StrapdownState strapdownStep(const StrapdownState& state, const ImuStep& step,
   return next;
 }
 
+Eigen::Vector3d velocityAtIntervalEnd(const Eigen::Quaterniond& start_orientation,
+                                      const Eigen::Vector3d& start_position,
+                                      const Eigen::Vector3d& end_position, double interval,
+                                      const std::vector<ImuStep>& steps,
+                                      const ImuCalibration& calibration,
+                                      const Eigen::Vector3d& gravity_ref) {
+  if (!(interval > 0.0)) return Eigen::Vector3d::Zero();
+  StrapdownState from_rest;
+  from_rest.orientation = start_orientation;
+  for (const ImuStep& step : steps) {
+    from_rest = strapdownStep(from_rest, step, calibration, gravity_ref);
+  }
+  return (end_position - start_position - from_rest.position) / interval + from_rest.velocity;
+}
+
 }  // namespace vicc_tracking

@@ -41,17 +41,23 @@ Eigen::Vector3d velocityAt(const PoseHistory& history, size_t age) {
 
 }  // namespace
 
-Vector14d virtualMeasurement(const PoseHistory& history, double interval_dt) {
+Vector14d virtualMeasurement(const PoseHistory& history, double interval_dt,
+                             const std::vector<Eigen::Vector3d>& velocities) {
   if (history.empty()) throw std::logic_error("virtualMeasurement needs at least one pose");
   const StampedPose& current = history.back();
-  const Eigen::Vector3d velocity = velocityAt(history, 0);  // Eq. 5.10
+  const Eigen::Vector3d velocity =
+      velocities.size() >= 1 ? velocities[0] : velocityAt(history, 0);  // Eq. 5.10
   Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();   // Eq. 5.11
   Quat4 angular_velocity_quat = identityQuat();             // Eq. 5.12, i = 0
   if (history.size() >= 2) {
     const StampedPose& previous = history.back(1);
     const double dt_previous = current.stamp - previous.stamp;
     if (dt_previous > 0.0) {
-      if (history.size() >= 3) acceleration = (velocity - velocityAt(history, 1)) / dt_previous;
+      if (velocities.size() >= 2) {
+        acceleration = (velocity - velocities[1]) / dt_previous;
+      } else if (history.size() >= 3) {
+        acceleration = (velocity - velocityAt(history, 1)) / dt_previous;
+      }
       angular_velocity_quat = multiply(
           (2.0 / dt_previous) * (current.orientation - previous.orientation),
           conjugate(previous.orientation));

@@ -40,6 +40,7 @@ void readEkf(const ros::NodeHandle& nh, EkfConfig& config) {
   readOptionalParam(nh, "measurement_noise_position", config.measurement_noise_position);
   readOptionalParam(nh, "measurement_noise_base", config.measurement_noise_base);
   readOptionalParam(nh, "initial_covariance", config.initial_covariance);
+  readOptionalParam(nh, "imu_aided_virtual_velocity", config.imu_aided_virtual_velocity);
 }
 
 template <typename Config>
