@@ -33,8 +33,9 @@ cv::Mat1f toMetricDepth(const cv::Mat& raw) {
   } else if (raw.type() == CV_16UC1) {
     raw.convertTo(metric, CV_32F, 0.001);
   } else {
-    throw std::invalid_argument("unsupported depth image type (expected 32FC1 metres or 16UC1 "
-                                "millimetres)");
+    throw std::invalid_argument(
+        "unsupported depth image type (expected 32FC1 metres or 16UC1 "
+        "millimetres)");
   }
   for (int v = 0; v < metric.rows; ++v) {
     float* row = metric.ptr<float>(v);
@@ -57,17 +58,60 @@ PinholeIntrinsics PinholeIntrinsics::halved() const {
   return half;
 }
 
-DepthLevel computeDepthLevel(const cv::Mat1f& depth, const PinholeIntrinsics& intrinsics,
-                             double normal_depth_jump, const std::vector<Eigen::Vector2f>* rays) {
+namespace {
+
+/// Empty maps of `count` pixels for a level.
+DepthLevel emptyLevel(const PinholeIntrinsics& intrinsics, size_t count) {
   DepthLevel level;
   level.intrinsics = intrinsics;
-  level.depth = depth;
-  const int width = depth.cols;
-  const int height = depth.rows;
-  const size_t count = static_cast<size_t>(width) * height;
   level.vertices.assign(count, Eigen::Vector3f::Zero());
   level.normals.assign(count, Eigen::Vector3f::Zero());
   level.radii.assign(count, 0.f);
+  return level;
+}
+
+/// Normal and splat radius at `center` from its four neighbours (central differences);
+/// false at depth edges and holes, where a normal would be meaningless.
+struct NormalEstimator {
+  float max_jump;
+  float radius_factor;  ///< sqrt(2) / 2 / mean focal length
+
+  bool operator()(const Eigen::Vector3f& center, const Eigen::Vector3f& left,
+                  const Eigen::Vector3f& right, const Eigen::Vector3f& up,
+                  const Eigen::Vector3f& down, Eigen::Vector3f& normal, float& radius) const {
+    if (left.z() <= 0.f || right.z() <= 0.f || up.z() <= 0.f || down.z() <= 0.f) return false;
+    if (std::abs(right.z() - left.z()) > max_jump || std::abs(down.z() - up.z()) > max_jump) {
+      return false;
+    }
+    // Cross product written out: Eigen's SSE cross() trips a false GCC 12 array-bounds error.
+    const Eigen::Vector3f a = right - left;
+    const Eigen::Vector3f b = down - up;
+    normal = Eigen::Vector3f(a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(),
+                             a.x() * b.y() - a.y() * b.x());
+    const float length = normal.norm();
+    if (length <= 0.f) return false;
+    normal /= length;
+    if (normal.dot(center) > 0.f) normal = -normal;  // face the camera
+    // Splat radius as in Keller et al.: grows with distance and with grazing view angles.
+    const float cos_view = std::max(0.26f, std::abs(normal.dot(center)) / center.norm());
+    radius = radius_factor * center.z() / cos_view;
+    return true;
+  }
+};
+
+NormalEstimator normalEstimator(const PinholeIntrinsics& intrinsics, double normal_depth_jump) {
+  return {static_cast<float>(normal_depth_jump),
+          std::sqrt(2.f) * 0.5f / (0.5f * (intrinsics.fx + intrinsics.fy))};
+}
+
+}  // namespace
+
+DepthLevel computeDepthLevel(const cv::Mat1f& depth, const PinholeIntrinsics& intrinsics,
+                             double normal_depth_jump, const std::vector<Eigen::Vector2f>* rays) {
+  const int width = depth.cols;
+  const int height = depth.rows;
+  DepthLevel level = emptyLevel(intrinsics, static_cast<size_t>(width) * height);
+  level.depth = depth;
 
   const float inv_fx = 1.f / intrinsics.fx;
   const float inv_fy = 1.f / intrinsics.fy;
@@ -82,46 +126,68 @@ DepthLevel computeDepthLevel(const cv::Mat1f& depth, const PinholeIntrinsics& in
         const Eigen::Vector2f& ray = (*rays)[index];
         level.vertices[index] = Eigen::Vector3f(ray.x() * z, ray.y() * z, z);
       } else {
-        level.vertices[index] = Eigen::Vector3f((u - intrinsics.cx) * z * inv_fx,
-                                                (v - intrinsics.cy) * z * inv_fy, z);
+        level.vertices[index] =
+            Eigen::Vector3f((u - intrinsics.cx) * z * inv_fx, (v - intrinsics.cy) * z * inv_fy, z);
       }
       ++level.valid_vertices;
     }
   }
 
-  const float max_jump = static_cast<float>(normal_depth_jump);
-  const float mean_focal = 0.5f * (intrinsics.fx + intrinsics.fy);
+  const NormalEstimator estimate = normalEstimator(intrinsics, normal_depth_jump);
   for (int v = 1; v + 1 < height; ++v) {
     for (int u = 1; u + 1 < width; ++u) {
       const int index = v * width + u;
       const Eigen::Vector3f& center = level.vertices[index];
       if (center.z() <= 0.f) continue;
-      const Eigen::Vector3f& left = level.vertices[index - 1];
-      const Eigen::Vector3f& right = level.vertices[index + 1];
-      const Eigen::Vector3f& up = level.vertices[index - width];
-      const Eigen::Vector3f& down = level.vertices[index + width];
-      if (left.z() <= 0.f || right.z() <= 0.f || up.z() <= 0.f || down.z() <= 0.f) continue;
-      if (std::abs(right.z() - left.z()) > max_jump || std::abs(down.z() - up.z()) > max_jump) {
-        continue;  // depth edge: a normal across it would be meaningless
+      if (estimate(center, level.vertices[index - 1], level.vertices[index + 1],
+                   level.vertices[index - width], level.vertices[index + width],
+                   level.normals[index], level.radii[index])) {
+        ++level.valid_normals;
       }
-      // Cross product written out: Eigen's SSE cross() trips a false GCC 12 array-bounds error.
-      const Eigen::Vector3f a = right - left;
-      const Eigen::Vector3f b = down - up;
-      Eigen::Vector3f normal(a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(),
-                             a.x() * b.y() - a.y() * b.x());
-      const float length = normal.norm();
-      if (length <= 0.f) continue;
-      normal /= length;
-      if (normal.dot(center) > 0.f) normal = -normal;  // face the camera
-      level.normals[index] = normal;
-      ++level.valid_normals;
-      // Splat radius as in Keller et al.: grows with distance and with grazing view angles.
-      const float cos_view = std::max(0.26f, std::abs(normal.dot(center.normalized())));
-      level.radii[index] = std::sqrt(2.f) * 0.5f * center.z() / mean_focal / cos_view;
     }
   }
   return level;
 }
+
+namespace {
+
+/// A level on the pinhole grid computed straight from the distorted sensor depth: each pixel
+/// takes the vertex, normal and radius of its nearest sensor pixel (`source_index`), with the
+/// normal from that pixel's sensor neighbours. Same result as computing the level on the
+/// sensor grid and resampling it, without the intermediate maps.
+DepthLevel computeUndistortedLevel(const cv::Mat1f& sensor_depth,
+                                   const PinholeIntrinsics& intrinsics, double normal_depth_jump,
+                                   const std::vector<Eigen::Vector2f>& rays,
+                                   const std::vector<int>& source_index) {
+  const int width = sensor_depth.cols, height = sensor_depth.rows;
+  DepthLevel level = emptyLevel(intrinsics, source_index.size());
+  level.depth = cv::Mat1f(intrinsics.height, intrinsics.width, 0.f);
+  const float* depth = sensor_depth.ptr<float>(0);
+  const auto vertex_at = [&](int s) {
+    const float z = depth[s];
+    return z > 0.f ? Eigen::Vector3f(rays[s].x() * z, rays[s].y() * z, z)
+                   : Eigen::Vector3f::Zero().eval();
+  };
+  const NormalEstimator estimate = normalEstimator(intrinsics, normal_depth_jump);
+  float* out_depth = level.depth.ptr<float>(0);
+  for (size_t i = 0; i < source_index.size(); ++i) {
+    const int s = source_index[i];
+    if (s < 0 || depth[s] <= 0.f) continue;
+    const Eigen::Vector3f center = vertex_at(s);
+    level.vertices[i] = center;
+    out_depth[i] = center.z();
+    ++level.valid_vertices;
+    const int su = s % width, sv = s / width;
+    if (su < 1 || sv < 1 || su + 1 >= width || sv + 1 >= height) continue;
+    if (estimate(center, vertex_at(s - 1), vertex_at(s + 1), vertex_at(s - width),
+                 vertex_at(s + width), level.normals[i], level.radii[i])) {
+      ++level.valid_normals;
+    }
+  }
+  return level;
+}
+
+}  // namespace
 
 cv::Mat1f downsampleDepth(const cv::Mat1f& depth, float threshold) {
   cv::Mat1f half(depth.rows / 2, depth.cols / 2, 0.f);
@@ -225,35 +291,6 @@ cv::Mat1f DepthPreprocessor::undistort(const cv::Mat1f& metric_depth) const {
   return undistorted;
 }
 
-namespace {
-
-/// Moves a level computed on the sensor grid onto the pinhole grid (nearest sensor pixel).
-DepthLevel resampleLevel(const DepthLevel& sensor, const PinholeIntrinsics& intrinsics,
-                         const std::vector<int>& source_index) {
-  DepthLevel level;
-  level.intrinsics = intrinsics;
-  const size_t count = source_index.size();
-  level.depth = cv::Mat1f(intrinsics.height, intrinsics.width, 0.f);
-  level.vertices.assign(count, Eigen::Vector3f::Zero());
-  level.normals.assign(count, Eigen::Vector3f::Zero());
-  level.radii.assign(count, 0.f);
-  float* depth = level.depth.ptr<float>(0);
-  for (size_t i = 0; i < count; ++i) {
-    const int source = source_index[i];
-    if (source < 0 || !sensor.hasVertex(source)) continue;
-    level.vertices[i] = sensor.vertices[source];
-    depth[i] = sensor.vertices[source].z();
-    ++level.valid_vertices;
-    if (!sensor.hasNormal(source)) continue;
-    level.normals[i] = sensor.normals[source];
-    level.radii[i] = sensor.radii[source];
-    ++level.valid_normals;
-  }
-  return level;
-}
-
-}  // namespace
-
 DepthPyramid DepthPreprocessor::process(const cv::Mat& raw) const {
   if (!has_camera_) throw std::logic_error("DepthPreprocessor: no camera set");
   if (raw.cols != camera_.width || raw.rows != camera_.height) {
@@ -265,16 +302,25 @@ DepthPyramid DepthPreprocessor::process(const cv::Mat& raw) const {
   cv::Mat1f depth = toMetricDepth(raw);  // a new image: the caller's stays untouched
   const float min_depth = static_cast<float>(config_.min_depth);
   const float max_depth = static_cast<float>(config_.max_depth);
-  depth.forEach([&](float& d, const int*) {
-    if (d < min_depth || d > max_depth) d = 0.f;
-  });
+  for (int v = 0; v < depth.rows; ++v) {
+    float* row = depth.ptr<float>(v);
+    for (int u = 0; u < depth.cols; ++u) {
+      if (row[u] < min_depth || row[u] > max_depth) row[u] = 0.f;
+    }
+  }
 
   if (config_.bilateral_filter) {
     cv::Mat1f filtered;
-    cv::bilateralFilter(depth, filtered, config_.bilateral_diameter,
-                        config_.bilateral_sigma_depth, config_.bilateral_sigma_space);
+    cv::bilateralFilter(depth, filtered, config_.bilateral_diameter, config_.bilateral_sigma_depth,
+                        config_.bilateral_sigma_space);
     // Invalid pixels stay invalid; valid ones never take a value blended with "0".
-    filtered.setTo(0.f, depth == 0.f);
+    for (int v = 0; v < depth.rows; ++v) {
+      const float* input = depth.ptr<float>(v);
+      float* output = filtered.ptr<float>(v);
+      for (int u = 0; u < depth.cols; ++u) {
+        if (input[u] == 0.f) output[u] = 0.f;
+      }
+    }
     depth = filtered;
   }
 
@@ -289,9 +335,8 @@ DepthPyramid DepthPreprocessor::process(const cv::Mat& raw) const {
     if (geometry.source_index.empty()) {
       pyramid.push_back(computeDepthLevel(depth, geometry.intrinsics, jump));
     } else {
-      const DepthLevel sensor =
-          computeDepthLevel(depth, geometry.intrinsics, jump, &geometry.sensor_rays);
-      pyramid.push_back(resampleLevel(sensor, geometry.intrinsics, geometry.source_index));
+      pyramid.push_back(computeUndistortedLevel(depth, geometry.intrinsics, jump,
+                                                geometry.sensor_rays, geometry.source_index));
     }
   }
   return pyramid;
