@@ -2,7 +2,12 @@
 // Four floats at once with the GCC/Clang vector extensions: SSE on x86-64, NEON on ARM, plain
 // code elsewhere. For the per-pixel loops that dominate a frame (ICP sums, model splatting).
 
+#include <cmath>
 #include <cstring>
+
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 namespace vicc_tracking::simd {
 
@@ -18,5 +23,15 @@ inline Float4 load4(const float* p) {
 inline void store4(float* p, Float4 v) { std::memcpy(p, &v, sizeof(v)); }
 
 inline float sum4(Float4 v) { return (v[0] + v[1]) + (v[2] + v[3]); }
+
+inline Float4 sqrt4(Float4 v) {
+#if defined(__SSE__)
+  return (Float4)_mm_sqrt_ps((__m128)v);
+#else
+  return Float4{std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2]), std::sqrt(v[3])};
+#endif
+}
+
+inline Float4 abs4(Float4 v) { return v < 0.f ? -v : v; }
 
 }  // namespace vicc_tracking::simd

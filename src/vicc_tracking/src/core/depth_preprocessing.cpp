@@ -7,6 +7,8 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "vicc_tracking/simd4.hpp"
+
 namespace vicc_tracking {
 
 void PreprocessingConfig::validate() const {
@@ -60,130 +62,139 @@ PinholeIntrinsics PinholeIntrinsics::halved() const {
 
 namespace {
 
-/// Empty maps of `count` pixels for a level.
-DepthLevel emptyLevel(const PinholeIntrinsics& intrinsics, size_t count) {
+using simd::Float4;
+using simd::load4;
+using simd::Mask4;
+using simd::store4;
+
+/// Vertex, normal and splat radius of every pixel of a depth grid, one plane per quantity
+/// (row-major; a zero normal marks pixels without one). Planes let the normals be computed
+/// four pixels at a time.
+struct GridPlanes {
+  int width = 0, height = 0;
+  std::vector<float> x, y, z, nx, ny, nz, radius;
+};
+
+/// Eq. 2.4, V(u) = D(u) K^-1 (u, 1), with the sensor's exact ray per pixel when `rays` is
+/// given; normals by central differences (none at holes and depth edges, where they would be
+/// meaningless), facing the camera; splat radius as in Keller et al.: grows with distance and
+/// with grazing view angles.
+GridPlanes computeGridPlanes(const cv::Mat1f& depth, const PinholeIntrinsics& intrinsics,
+                             double normal_depth_jump, const std::vector<Eigen::Vector2f>* rays) {
+  GridPlanes planes;
+  const int width = planes.width = depth.cols;
+  const int height = planes.height = depth.rows;
+  const size_t count = static_cast<size_t>(width) * height;
+  // Zero padding: the last chunks of the bottom interior row read a few values past the end.
+  planes.x.assign(count + 8, 0.f);
+  planes.y.assign(count + 8, 0.f);
+  planes.z.assign(count + 8, 0.f);
+  const float inv_fx = 1.f / intrinsics.fx, inv_fy = 1.f / intrinsics.fy;
+  for (int v = 0; v < height; ++v) {
+    const float* row = depth.ptr<float>(v);
+    for (int u = 0; u < width; ++u) {
+      const size_t i = static_cast<size_t>(v) * width + u;
+      const float z = row[u] > 0.f ? row[u] : 0.f;
+      const float ray_x = rays ? (*rays)[i].x() : (u - intrinsics.cx) * inv_fx;
+      const float ray_y = rays ? (*rays)[i].y() : (v - intrinsics.cy) * inv_fy;
+      planes.x[i] = ray_x * z;
+      planes.y[i] = ray_y * z;
+      planes.z[i] = z;
+    }
+  }
+
+  // Four pixels of a row at once; a chunk running past the row's last interior pixel writes
+  // only zeros there, into border pixels or into pixels of the next row computed after it.
+  for (auto* plane : {&planes.nx, &planes.ny, &planes.nz, &planes.radius}) {
+    plane->assign(count + 4, 0.f);
+  }
+  const float max_jump = static_cast<float>(normal_depth_jump);
+  const float radius_factor = std::sqrt(2.f) * 0.5f / (0.5f * (intrinsics.fx + intrinsics.fy));
+  const Float4 zero = {0.f, 0.f, 0.f, 0.f};
+  const float *x = planes.x.data(), *y = planes.y.data(), *z = planes.z.data();
+  for (int v = 1; v + 1 < height; ++v) {
+    for (int u = 1; u + 1 < width; u += 4) {
+      const size_t i = static_cast<size_t>(v) * width + u;
+      const size_t up = i - width, down = i + width;
+      const Float4 cz = load4(z + i), lz = load4(z + i - 1), rz = load4(z + i + 1);
+      const Float4 uz = load4(z + up), dz = load4(z + down);
+      Mask4 valid = (cz > 0.f) & (lz > 0.f) & (rz > 0.f) & (uz > 0.f) & (dz > 0.f) &
+                    (simd::abs4(rz - lz) <= max_jump) & (simd::abs4(dz - uz) <= max_jump);
+      const Float4 ax = load4(x + i + 1) - load4(x + i - 1),
+                   ay = load4(y + i + 1) - load4(y + i - 1);
+      const Float4 az = rz - lz;
+      const Float4 bx = load4(x + down) - load4(x + up), by = load4(y + down) - load4(y + up);
+      const Float4 bz = dz - uz;
+      Float4 nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
+      const Float4 length_sq = nx * nx + ny * ny + nz * nz;
+      valid &= length_sq > 0.f;
+      const Float4 inv_length = valid ? 1.f / simd::sqrt4(length_sq) : zero;
+      const Float4 cx = load4(x + i), cy = load4(y + i);
+      const Float4 facing = (nx * cx + ny * cy + nz * cz) * inv_length;
+      const Float4 sign = facing > 0.f ? -inv_length : inv_length;  // face the camera
+      nx *= sign;
+      ny *= sign;
+      nz *= sign;
+      const Float4 center_length = simd::sqrt4(cx * cx + cy * cy + cz * cz);
+      Float4 cos_view = valid ? simd::abs4(facing) / center_length : zero;
+      cos_view = cos_view > 0.26f ? cos_view : Float4{0.26f, 0.26f, 0.26f, 0.26f};
+      store4(&planes.nx[i], valid ? nx : zero);
+      store4(&planes.ny[i], valid ? ny : zero);
+      store4(&planes.nz[i], valid ? nz : zero);
+      store4(&planes.radius[i], valid ? radius_factor * cz / cos_view : zero);
+    }
+  }
+  return planes;
+}
+
+/// The level's maps from the planes: pixel i takes grid pixel source(i) (< 0: none).
+template <typename Source>
+DepthLevel levelFromPlanes(const GridPlanes& planes, const PinholeIntrinsics& intrinsics,
+                           Source source) {
   DepthLevel level;
   level.intrinsics = intrinsics;
+  const size_t count = static_cast<size_t>(intrinsics.width) * intrinsics.height;
   level.vertices.assign(count, Eigen::Vector3f::Zero());
   level.normals.assign(count, Eigen::Vector3f::Zero());
   level.radii.assign(count, 0.f);
-  return level;
-}
-
-/// Normal and splat radius at `center` from its four neighbours (central differences);
-/// false at depth edges and holes, where a normal would be meaningless.
-struct NormalEstimator {
-  float max_jump;
-  float radius_factor;  ///< sqrt(2) / 2 / mean focal length
-
-  bool operator()(const Eigen::Vector3f& center, const Eigen::Vector3f& left,
-                  const Eigen::Vector3f& right, const Eigen::Vector3f& up,
-                  const Eigen::Vector3f& down, Eigen::Vector3f& normal, float& radius) const {
-    if (left.z() <= 0.f || right.z() <= 0.f || up.z() <= 0.f || down.z() <= 0.f) return false;
-    if (std::abs(right.z() - left.z()) > max_jump || std::abs(down.z() - up.z()) > max_jump) {
-      return false;
-    }
-    // Cross product written out: Eigen's SSE cross() trips a false GCC 12 array-bounds error.
-    const Eigen::Vector3f a = right - left;
-    const Eigen::Vector3f b = down - up;
-    normal = Eigen::Vector3f(a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(),
-                             a.x() * b.y() - a.y() * b.x());
-    const float length = normal.norm();
-    if (length <= 0.f) return false;
-    normal /= length;
-    if (normal.dot(center) > 0.f) normal = -normal;  // face the camera
-    // Splat radius as in Keller et al.: grows with distance and with grazing view angles.
-    const float cos_view = std::max(0.26f, std::abs(normal.dot(center)) / center.norm());
-    radius = radius_factor * center.z() / cos_view;
-    return true;
+  for (size_t i = 0; i < count; ++i) {
+    const int s = source(i);
+    if (s < 0 || planes.z[s] <= 0.f) continue;
+    level.vertices[i] = Eigen::Vector3f(planes.x[s], planes.y[s], planes.z[s]);
+    ++level.valid_vertices;
+    if (planes.nz[s] == 0.f && planes.nx[s] == 0.f) continue;
+    level.normals[i] = Eigen::Vector3f(planes.nx[s], planes.ny[s], planes.nz[s]);
+    level.radii[i] = planes.radius[s];
+    ++level.valid_normals;
   }
-};
-
-NormalEstimator normalEstimator(const PinholeIntrinsics& intrinsics, double normal_depth_jump) {
-  return {static_cast<float>(normal_depth_jump),
-          std::sqrt(2.f) * 0.5f / (0.5f * (intrinsics.fx + intrinsics.fy))};
+  return level;
 }
 
 }  // namespace
 
 DepthLevel computeDepthLevel(const cv::Mat1f& depth, const PinholeIntrinsics& intrinsics,
                              double normal_depth_jump, const std::vector<Eigen::Vector2f>* rays) {
-  const int width = depth.cols;
-  const int height = depth.rows;
-  DepthLevel level = emptyLevel(intrinsics, static_cast<size_t>(width) * height);
+  const GridPlanes planes = computeGridPlanes(depth, intrinsics, normal_depth_jump, rays);
+  DepthLevel level =
+      levelFromPlanes(planes, intrinsics, [](size_t i) { return static_cast<int>(i); });
   level.depth = depth;
-
-  const float inv_fx = 1.f / intrinsics.fx;
-  const float inv_fy = 1.f / intrinsics.fy;
-  for (int v = 0; v < height; ++v) {
-    const float* row = depth.ptr<float>(v);
-    for (int u = 0; u < width; ++u) {
-      const float z = row[u];
-      if (z <= 0.f) continue;
-      // Eq. 2.4: V(u) = D(u) K^-1 (u, 1), with the sensor's exact ray when known.
-      const int index = v * width + u;
-      if (rays) {
-        const Eigen::Vector2f& ray = (*rays)[index];
-        level.vertices[index] = Eigen::Vector3f(ray.x() * z, ray.y() * z, z);
-      } else {
-        level.vertices[index] =
-            Eigen::Vector3f((u - intrinsics.cx) * z * inv_fx, (v - intrinsics.cy) * z * inv_fy, z);
-      }
-      ++level.valid_vertices;
-    }
-  }
-
-  const NormalEstimator estimate = normalEstimator(intrinsics, normal_depth_jump);
-  for (int v = 1; v + 1 < height; ++v) {
-    for (int u = 1; u + 1 < width; ++u) {
-      const int index = v * width + u;
-      const Eigen::Vector3f& center = level.vertices[index];
-      if (center.z() <= 0.f) continue;
-      if (estimate(center, level.vertices[index - 1], level.vertices[index + 1],
-                   level.vertices[index - width], level.vertices[index + width],
-                   level.normals[index], level.radii[index])) {
-        ++level.valid_normals;
-      }
-    }
-  }
   return level;
 }
 
 namespace {
 
-/// A level on the pinhole grid computed straight from the distorted sensor depth: each pixel
-/// takes the vertex, normal and radius of its nearest sensor pixel (`source_index`), with the
-/// normal from that pixel's sensor neighbours. Same result as computing the level on the
-/// sensor grid and resampling it, without the intermediate maps.
+/// A level on the pinhole grid from the distorted sensor depth: each pixel takes the vertex,
+/// normal and radius of its nearest sensor pixel (`source_index`), the normal computed from
+/// that pixel's sensor neighbours.
 DepthLevel computeUndistortedLevel(const cv::Mat1f& sensor_depth,
                                    const PinholeIntrinsics& intrinsics, double normal_depth_jump,
                                    const std::vector<Eigen::Vector2f>& rays,
                                    const std::vector<int>& source_index) {
-  const int width = sensor_depth.cols, height = sensor_depth.rows;
-  DepthLevel level = emptyLevel(intrinsics, source_index.size());
+  const GridPlanes planes = computeGridPlanes(sensor_depth, intrinsics, normal_depth_jump, &rays);
+  DepthLevel level = levelFromPlanes(planes, intrinsics, [&](size_t i) { return source_index[i]; });
   level.depth = cv::Mat1f(intrinsics.height, intrinsics.width, 0.f);
-  const float* depth = sensor_depth.ptr<float>(0);
-  const auto vertex_at = [&](int s) {
-    const float z = depth[s];
-    return z > 0.f ? Eigen::Vector3f(rays[s].x() * z, rays[s].y() * z, z)
-                   : Eigen::Vector3f::Zero().eval();
-  };
-  const NormalEstimator estimate = normalEstimator(intrinsics, normal_depth_jump);
-  float* out_depth = level.depth.ptr<float>(0);
-  for (size_t i = 0; i < source_index.size(); ++i) {
-    const int s = source_index[i];
-    if (s < 0 || depth[s] <= 0.f) continue;
-    const Eigen::Vector3f center = vertex_at(s);
-    level.vertices[i] = center;
-    out_depth[i] = center.z();
-    ++level.valid_vertices;
-    const int su = s % width, sv = s / width;
-    if (su < 1 || sv < 1 || su + 1 >= width || sv + 1 >= height) continue;
-    if (estimate(center, vertex_at(s - 1), vertex_at(s + 1), vertex_at(s - width),
-                 vertex_at(s + width), level.normals[i], level.radii[i])) {
-      ++level.valid_normals;
-    }
-  }
+  float* depth = level.depth.ptr<float>(0);
+  for (size_t i = 0; i < level.vertices.size(); ++i) depth[i] = level.vertices[i].z();
   return level;
 }
 

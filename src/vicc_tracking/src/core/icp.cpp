@@ -1,5 +1,6 @@
 #include "vicc_tracking/icp.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -14,6 +15,7 @@ namespace {
 constexpr double kDegToRad = M_PI / 180.0;
 using simd::Float4;
 using simd::load4;
+using simd::Mask4;
 using simd::sum4;
 }  // namespace
 
@@ -60,80 +62,113 @@ ProjectiveIcp::ProjectiveIcp(const IcpConfig& config) : config_(config) {
   min_normal_cosine_ = static_cast<float>(std::cos(config_.max_normal_angle_deg * kDegToRad));
 }
 
-PointToPlaneSystem ProjectiveIcp::buildSystem(const DepthLevel& source, const DepthLevel& reference,
-                                              const Eigen::Isometry3d& pose,
-                                              double max_distance) const {
-  const Eigen::Matrix3f rotation = pose.linear().cast<float>();
-  const Eigen::Vector3f translation = pose.translation().cast<float>();
+namespace {
+
+/// The source pixels that have a normal, as planes of four-aligned length (the padding has a
+/// zero normal, so it never passes the normal test). Built once per level and frame: every
+/// ICP iteration then reads only valid points, four at a time.
+struct SourcePoints {
+  std::vector<float> x, y, z, nx, ny, nz;
+  size_t size() const { return x.size(); }
+};
+
+SourcePoints compactSource(const DepthLevel& source) {
+  const size_t pixels = source.normals.size();
+  SourcePoints points;
+  for (auto* plane : {&points.x, &points.y, &points.z, &points.nx, &points.ny, &points.nz}) {
+    plane->assign(pixels + 3, 0.f);
+  }
+  // Every pixel is written at the next free slot, which only advances for valid ones: no
+  // branch on validity (it changes pixel by pixel at every hole and edge).
+  size_t n = 0;
+  for (size_t i = 0; i < pixels; ++i) {
+    const Eigen::Vector3f& vertex = source.vertices[i];
+    const Eigen::Vector3f& normal = source.normals[i];
+    points.x[n] = vertex.x();
+    points.y[n] = vertex.y();
+    points.z[n] = vertex.z();
+    points.nx[n] = normal.x();
+    points.ny[n] = normal.y();
+    points.nz[n] = normal.z();
+    n += (normal.z() != 0.f) | (normal.x() != 0.f);
+  }
+  const size_t padded = (n + 3) / 4 * 4;
+  for (auto* plane : {&points.x, &points.y, &points.z, &points.nx, &points.ny, &points.nz}) {
+    std::fill(plane->begin() + n, plane->begin() + padded, 0.f);  // zero normal: never valid
+    plane->resize(padded);
+  }
+  return points;
+}
+
+/// Eq. 2.6 (projective data association, nearest reference pixel) and Eq. 2.7 linearised,
+/// r + (p x n) . w + n . t, summed into the normal equations four points at a time: the 21
+/// upper-triangle entries of J^T J and J^T r in float lanes, flushed to double every few
+/// hundred points.
+PointToPlaneSystem sumSystem(const SourcePoints& source, const DepthLevel& reference,
+                             const Eigen::Isometry3d& pose, double max_distance,
+                             float min_normal_cosine) {
+  const Eigen::Matrix3f r = pose.linear().cast<float>();
+  const Eigen::Vector3f t = pose.translation().cast<float>();
   const PinholeIntrinsics& k = reference.intrinsics;
   const float max_distance_sq = static_cast<float>(max_distance * max_distance);
-  const int width = source.intrinsics.width;
-  const int height = source.intrinsics.height;
-
-  // Per row: find the correspondences (scalar: projection and lookups), keep them in planes,
-  // then accumulate the 21 upper-triangle entries of J^T J and J^T r four at a time in float,
-  // and in double across rows.
-  PointToPlaneSystem system;
   const float max_u = static_cast<float>(k.width) - 0.5f;
   const float max_v = static_cast<float>(k.height) - 0.5f;
-  const size_t padded = static_cast<size_t>(width) + 4;
-  std::vector<float> planes(7 * padded);
-  float* const px = planes.data();
-  float* const py = px + padded;
-  float* const pz = py + padded;
-  float* const nx = pz + padded;
-  float* const ny = nx + padded;
-  float* const nz = ny + padded;
-  float* const residuals = nz + padded;
-  for (int v = 0; v < height; ++v) {
-    int n = 0;
-    for (int u = 0; u < width; ++u) {
-      const int index = v * width + u;
-      const Eigen::Vector3f& source_normal = source.normals[index];
-      if (source_normal.z() == 0.f && source_normal.x() == 0.f) continue;
-      const Eigen::Vector3f point = rotation * source.vertices[index] + translation;
-      if (point.z() <= 0.f) continue;
-      // Eq. 2.6: projective data association (rounding to the nearest reference pixel).
-      const float inverse_z = 1.f / point.z();
-      const float pu = k.fx * point.x() * inverse_z + k.cx;
-      const float pv = k.fy * point.y() * inverse_z + k.cy;
-      if (!(pu >= -0.5f && pv >= -0.5f && pu < max_u && pv < max_v)) continue;
-      const int reference_index =
-          static_cast<int>(pv + 0.5f) * k.width + static_cast<int>(pu + 0.5f);
-      const Eigen::Vector3f& normal = reference.normals[reference_index];
-      if (normal.z() == 0.f && normal.x() == 0.f) continue;
-      const Eigen::Vector3f difference = point - reference.vertices[reference_index];
-      if (difference.squaredNorm() > max_distance_sq) continue;
-      if ((rotation * source_normal).dot(normal) < min_normal_cosine_) continue;
-      px[n] = point.x();
-      py[n] = point.y();
-      pz[n] = point.z();
-      nx[n] = normal.x();
-      ny[n] = normal.y();
-      nz[n] = normal.z();
-      residuals[n] = normal.dot(difference);
-      ++n;
-    }
-    if (n == 0) continue;
-    for (int pad = n; pad % 4 != 0; ++pad) {  // zero normal and residual: adds nothing
-      px[pad] = py[pad] = pz[pad] = nx[pad] = ny[pad] = nz[pad] = residuals[pad] = 0.f;
-    }
+  const Eigen::Vector3f* reference_vertices = reference.vertices.data();
+  const Eigen::Vector3f* reference_normals = reference.normals.data();
 
-    // Eq. 2.7 linearised: r + (p x n) . w + n . t.
+  PointToPlaneSystem system;
+  constexpr size_t kFlushEvery = 256;
+  for (size_t block = 0; block < source.size(); block += kFlushEvery) {
     Float4 ata[21] = {};
     Float4 atb[6] = {};
     Float4 error = {};
-    for (int c = 0; c < n; c += 4) {
-      const Float4 x = load4(px + c), y = load4(py + c), z = load4(pz + c);
-      const Float4 a = load4(nx + c), b = load4(ny + c), d = load4(nz + c);
-      const Float4 r = load4(residuals + c);
+    Mask4 count = {};
+    const size_t block_end = std::min(source.size(), block + kFlushEvery);
+    for (size_t c = block; c < block_end; c += 4) {
+      const Float4 sx = load4(&source.x[c]), sy = load4(&source.y[c]), sz = load4(&source.z[c]);
+      const Float4 x = r(0, 0) * sx + r(0, 1) * sy + r(0, 2) * sz + t.x();
+      const Float4 y = r(1, 0) * sx + r(1, 1) * sy + r(1, 2) * sz + t.y();
+      const Float4 z = r(2, 0) * sx + r(2, 1) * sy + r(2, 2) * sz + t.z();
+      const Mask4 in_front = z > 0.f;
+      const Float4 inverse_z = in_front ? 1.f / z : Float4{};
+      const Float4 pu = k.fx * x * inverse_z + k.cx;
+      const Float4 pv = k.fy * y * inverse_z + k.cy;
+      const Mask4 inside = in_front & (pu >= -0.5f) & (pv >= -0.5f) & (pu < max_u) & (pv < max_v);
+      if (!(inside[0] | inside[1] | inside[2] | inside[3])) continue;
+      const Mask4 index = inside ? __builtin_convertvector(pv + 0.5f, Mask4) * k.width +
+                                       __builtin_convertvector(pu + 0.5f, Mask4)
+                                 : Mask4{};
+      Float4 rx, ry, rz, nx, ny, nz;  // reference vertex and normal per lane (a gather)
+      for (int lane = 0; lane < 4; ++lane) {
+        const Eigen::Vector3f& vertex = reference_vertices[index[lane]];
+        const Eigen::Vector3f& normal = reference_normals[index[lane]];
+        rx[lane] = vertex.x();
+        ry[lane] = vertex.y();
+        rz[lane] = vertex.z();
+        nx[lane] = normal.x();
+        ny[lane] = normal.y();
+        nz[lane] = normal.z();
+      }
+      const Float4 dx = x - rx, dy = y - ry, dz = z - rz;
+      const Float4 snx = load4(&source.nx[c]), sny = load4(&source.ny[c]),
+                   snz = load4(&source.nz[c]);
+      const Float4 rotated_x = r(0, 0) * snx + r(0, 1) * sny + r(0, 2) * snz;
+      const Float4 rotated_y = r(1, 0) * snx + r(1, 1) * sny + r(1, 2) * snz;
+      const Float4 rotated_z = r(2, 0) * snx + r(2, 1) * sny + r(2, 2) * snz;
+      const Mask4 valid = inside & ((nz != 0.f) | (nx != 0.f)) &
+                          (dx * dx + dy * dy + dz * dz <= max_distance_sq) &
+                          (rotated_x * nx + rotated_y * ny + rotated_z * nz >= min_normal_cosine);
+      // Rejected lanes get a zero normal and residual: they add nothing.
+      const Float4 a = valid ? nx : Float4{}, b = valid ? ny : Float4{}, d = valid ? nz : Float4{};
+      const Float4 residual = a * dx + b * dy + d * dz;
       const Float4 j[6] = {y * d - z * b, z * a - x * d, x * b - y * a, a, b, d};
       int entry = 0;
       for (int row = 0; row < 6; ++row) {
         for (int col = row; col < 6; ++col) ata[entry++] += j[row] * j[col];
-        atb[row] += j[row] * r;
+        atb[row] += j[row] * residual;
       }
-      error += r * r;
+      error += residual * residual;
+      count -= valid;  // true lanes are -1
     }
     int entry = 0;
     for (int row = 0; row < 6; ++row) {
@@ -141,10 +176,18 @@ PointToPlaneSystem ProjectiveIcp::buildSystem(const DepthLevel& source, const De
       system.atb(row) += sum4(atb[row]);
     }
     system.squared_error += sum4(error);
-    system.count += n;
+    system.count += count[0] + count[1] + count[2] + count[3];
   }
   system.ata = system.ata.selfadjointView<Eigen::Upper>();
   return system;
+}
+
+}  // namespace
+
+PointToPlaneSystem ProjectiveIcp::buildSystem(const DepthLevel& source, const DepthLevel& reference,
+                                              const Eigen::Isometry3d& pose,
+                                              double max_distance) const {
+  return sumSystem(compactSource(source), reference, pose, max_distance, min_normal_cosine_);
 }
 
 IcpResult ProjectiveIcp::align(const DepthPyramid& source, const DepthPyramid& reference,
@@ -163,9 +206,10 @@ IcpResult ProjectiveIcp::align(const DepthPyramid& source, const DepthPyramid& r
         config_
             .iterations_per_level[std::min<size_t>(level, config_.iterations_per_level.size() - 1)];
     const double max_distance = config_.max_correspondence_distance * std::pow(2.0, level);
+    const SourcePoints points = max_iterations > 0 ? compactSource(source[level]) : SourcePoints{};
     for (int iteration = 0; iteration < max_iterations; ++iteration) {
       PointToPlaneSystem system =
-          buildSystem(source[level], reference[level], result.pose, max_distance);
+          sumSystem(points, reference[level], result.pose, max_distance, min_normal_cosine_);
       last_system = system;
       if (system.count < 6) break;  // nothing to solve on this level; try the finer one
       const Eigen::Matrix<double, 6, 1> twist = system.ata.ldlt().solve(-system.atb);

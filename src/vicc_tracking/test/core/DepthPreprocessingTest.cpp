@@ -35,7 +35,8 @@ TEST(DepthPreprocessingTest, DistortedRenderingUndistortsOntoTheTrueSurface) {
   for (const auto model : {DistortionModel::kPlumbBob, DistortionModel::kEquidistant}) {
     sim::Scenario scenario = rig.scenario();
     scenario.camera.model = model;
-    if (model == DistortionModel::kEquidistant) scenario.camera.distortion = {0.05, -0.01, 0.002, 0.0};
+    if (model == DistortionModel::kEquidistant)
+      scenario.camera.distortion = {0.05, -0.01, 0.002, 0.0};
     const sim::RigSimulator distorted_rig(scenario);
     PreprocessingConfig config;
     config.bilateral_filter = false;
@@ -64,6 +65,51 @@ TEST(DepthPreprocessingTest, DistortedRenderingUndistortsOntoTheTrueSurface) {
     EXPECT_LT(worst, 1e-4) << "metres off the surface, model " << toString(model);
     EXPECT_GT(level.valid_normals, level.valid_vertices * 8 / 10);
   }
+}
+
+TEST(DepthPreprocessingTest, NormalsOfATiltedPlaneEverywhereInsideAndNoneOnEdgesOrBorders) {
+  // The plane n.X = d seen by a pinhole camera: depth z(u, v) = d / (n . ray(u, v)). Its
+  // normal (facing the camera) must come out at every interior pixel, including the last
+  // columns (the normals are computed four pixels at a time), and nowhere on the border,
+  // at holes or across a depth edge.
+  PinholeIntrinsics k;
+  k.width = 37;  // not a multiple of four
+  k.height = 11;
+  k.fx = k.fy = 30.f;
+  k.cx = 18.f;
+  k.cy = 5.f;
+  const Eigen::Vector3f plane_normal = Eigen::Vector3f(0.3f, -0.2f, -1.f).normalized();
+  const float plane_distance = -0.8f;  // n . X = d with X at about 0.8 m
+  cv::Mat1f depth(k.height, k.width);
+  for (int v = 0; v < k.height; ++v) {
+    for (int u = 0; u < k.width; ++u) {
+      const Eigen::Vector3f ray((u - k.cx) / k.fx, (v - k.cy) / k.fy, 1.f);
+      depth(v, u) = plane_distance / plane_normal.dot(ray);
+    }
+  }
+  depth(5, 10) = 0.f;    // a hole: it and its four neighbours have no normal
+  depth(2, 30) += 0.5f;  // a jump: pixels whose differences span it have none
+  const DepthLevel level = computeDepthLevel(depth, k, 0.05);
+  int normals = 0;
+  for (int v = 0; v < k.height; ++v) {
+    for (int u = 0; u < k.width; ++u) {
+      const int i = v * k.width + u;
+      const bool border = u == 0 || v == 0 || u == k.width - 1 || v == k.height - 1;
+      const bool near_hole = std::abs(u - 10) + std::abs(v - 5) <= 1;
+      const bool across_jump =
+          (v == 2 && std::abs(u - 30) == 1) || (u == 30 && std::abs(v - 2) == 1);
+      if (border || near_hole || across_jump) {
+        EXPECT_FALSE(level.hasNormal(i)) << u << "," << v;
+        continue;
+      }
+      if (u == 30 && v == 2) continue;  // the jump pixel itself: a normal of its own level
+      ASSERT_TRUE(level.hasNormal(i)) << u << "," << v;
+      EXPECT_NEAR(level.normals[i].dot(plane_normal), 1.f, 1e-4f) << u << "," << v;
+      EXPECT_GT(level.radii[i], 0.f);
+      ++normals;
+    }
+  }
+  EXPECT_EQ(level.valid_normals, normals + (level.hasNormal(2 * k.width + 30) ? 1 : 0));
 }
 
 TEST(DepthPreprocessingTest, WrongSizeOrTypeThrows) {
