@@ -1,9 +1,18 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
+
+#include <unistd.h>
 
 #include "reconstruct_options.hpp"
 #include "reconstruct_report.hpp"
+#include "vicc_tracking/tracker_config_yaml.hpp"
+
+#ifndef VICC_TRACKER_CONFIG_DIR
+#error "VICC_TRACKER_CONFIG_DIR must be defined by the build"
+#endif
 
 using namespace vicc_fusion;
 
@@ -13,6 +22,35 @@ bool parse(std::vector<const char*> args, ReconstructOptions& options) {
   args.insert(args.begin(), "vicc_reconstruct");
   std::ostringstream out;
   return parseReconstructOptions(static_cast<int>(args.size()), args.data(), options, out);
+}
+
+/// A YAML file in the test's temporary directory, removed at the end of the test.
+class TempYaml {
+ public:
+  explicit TempYaml(const std::string& text)
+      : path_(std::filesystem::temp_directory_path() /
+              ("vicc_reconstruct_test_" + std::to_string(::getpid()) + "_" +
+               std::to_string(counter_++) + ".yaml")) {
+    std::ofstream(path_) << text;
+  }
+  ~TempYaml() { std::filesystem::remove(path_); }
+  std::string path() const { return path_.string(); }
+
+ private:
+  static inline int counter_ = 0;
+  std::filesystem::path path_;
+};
+
+/// The message parseReconstructOptions() throws for `--config` with this YAML text.
+std::string configError(const std::string& text) {
+  const TempYaml file(text);
+  ReconstructOptions options;
+  try {
+    parse({"a.bag", "--config", file.path().c_str()}, options);
+  } catch (const std::invalid_argument& error) {
+    return error.what();
+  }
+  return "(no error)";
 }
 
 TEST(ReconstructToolTest, ParsesTheDocumentedOptions) {
@@ -40,6 +78,99 @@ TEST(ReconstructToolTest, RejectsBadArgumentsWithAMessage) {
   EXPECT_THROW(parse({"a.bag", "--report"}, options), std::invalid_argument);
   EXPECT_THROW(parse({"a.bag", "--bogus"}, options), std::invalid_argument);
   EXPECT_FALSE(parse({"--help"}, options));
+}
+
+TEST(ReconstructToolTest, ConfigFileRoundTripsNonDefaultValues) {
+  vicc_tracking::TrackerParameterSet written;
+  written.tracker.init_strategy = vicc_tracking::InitStrategyType::kImu;
+  written.tracker.preprocessing.pyramid_levels = 2;
+  written.tracker.preprocessing.bilateral_filter = false;
+  written.tracker.icp.iterations_per_level = {7, 3};
+  written.tracker.ekf.process_noise_position = 2.5e-7;
+  written.tracker.ekf.measurement_noise_rotation = 1.0 / 3.0;  // needs all 17 digits
+  written.tracker.synchronizer.max_gap = 0.25;
+  written.node.map_frame = "world";
+  const std::string yaml = vicc_tracking::toYaml(written);
+  const TempYaml file(yaml);
+
+  ReconstructOptions options;
+  ASSERT_TRUE(parse({"rec.bag", "--config", file.path().c_str()}, options));
+  EXPECT_EQ(options.config_path, file.path());
+  EXPECT_EQ(options.init, vicc_tracking::InitStrategyType::kImu);
+  EXPECT_EQ(options.levels, 2);
+  EXPECT_FALSE(options.tracker.preprocessing.bilateral_filter);
+  EXPECT_EQ(options.tracker.icp.iterations_per_level, (std::vector<int>{7, 3}));
+  EXPECT_EQ(options.tracker.ekf.process_noise_position, 2.5e-7);
+  EXPECT_EQ(options.tracker.ekf.measurement_noise_rotation, 1.0 / 3.0);
+  EXPECT_EQ(options.tracker.ekf.process_noise_velocity, vicc_tracking::EkfConfig{}.process_noise_velocity);
+  EXPECT_EQ(options.tracker.synchronizer.max_gap, 0.25);
+  // Every parameter comes back: the read set writes the same text.
+  EXPECT_EQ(vicc_tracking::toYaml(vicc_tracking::loadTrackerParameters(file.path())), yaml);
+
+  // --init and --levels on the command line override the file.
+  options = ReconstructOptions{};
+  ASSERT_TRUE(parse({"rec.bag", "--config", file.path().c_str(), "--init", "ekf", "--levels",
+                     "1"},
+                    options));
+  EXPECT_EQ(options.init, vicc_tracking::InitStrategyType::kEkf);
+  EXPECT_EQ(options.tracker.init_strategy, vicc_tracking::InitStrategyType::kEkf);
+  EXPECT_EQ(options.tracker.preprocessing.pyramid_levels, 1);
+  EXPECT_EQ(options.tracker.ekf.process_noise_position, 2.5e-7);
+
+  // The report records the parameters that were used.
+  const nlohmann::json json =
+      makeReport(options, ReconstructRun{}, vicc_tracking::TrackingStatistics{});
+  EXPECT_EQ(json["settings"]["config"], file.path());
+  EXPECT_EQ(json["tracker_parameters"]["ekf"]["process_noise_position"].get<double>(), 2.5e-7);
+  EXPECT_EQ(json["tracker_parameters"]["init_strategy"], "ekf");
+}
+
+TEST(ReconstructToolTest, ConfigFilesOfThePackageLoad) {
+  // The node's file documents the defaults: reading it must change nothing.
+  const std::string directory = VICC_TRACKER_CONFIG_DIR;
+  const auto defaults = vicc_tracking::loadTrackerParameters(directory + "/tracker.yaml");
+  EXPECT_EQ(vicc_tracking::toYaml(defaults), vicc_tracking::toYaml({}));
+  ReconstructOptions options;
+  EXPECT_TRUE(parse({"a.bag", "--config", (directory + "/tracker.yaml").c_str()}, options));
+}
+
+TEST(ReconstructToolTest, ConfigFileRejectsUnknownKeysNamingThem) {
+  const std::string nested = configError("ekf:\n  process_noise_rotaton: 1.0e-3\n");
+  EXPECT_NE(nested.find("ekf/process_noise_rotaton: unknown key"), std::string::npos) << nested;
+  EXPECT_NE(nested.find("process_noise_rotation"), std::string::npos) << nested;  // the known
+  const std::string top = configError("init_stratgy: imu\n");
+  EXPECT_NE(top.find("init_stratgy: unknown key"), std::string::npos) << top;
+  const std::string section = configError("fusion:\n  supersampling: 2\n");
+  EXPECT_NE(section.find("fusion: unknown key"), std::string::npos) << section;
+}
+
+TEST(ReconstructToolTest, ConfigFileRejectsWrongTypesNamingTheKey) {
+  const std::string text = configError("icp:\n  min_inliers: many\n");
+  EXPECT_NE(text.find("icp/min_inliers: has the wrong type: expected an integer, got 'many'"),
+            std::string::npos)
+      << text;
+  const std::string fraction = configError("preprocessing:\n  pyramid_levels: 2.5\n");
+  EXPECT_NE(fraction.find("preprocessing/pyramid_levels: has the wrong type"), std::string::npos)
+      << fraction;
+  const std::string list = configError("icp:\n  iterations_per_level: 10\n");
+  EXPECT_NE(list.find("icp/iterations_per_level: has the wrong type: expected a list"),
+            std::string::npos)
+      << list;
+  const std::string flag = configError("ekf:\n  imu_aided_virtual_velocity: maybe\n");
+  EXPECT_NE(flag.find("ekf/imu_aided_virtual_velocity: has the wrong type"), std::string::npos)
+      << flag;
+  const std::string section = configError("ekf: 1.0e-3\n");
+  EXPECT_NE(section.find("ekf: must be a section"), std::string::npos) << section;
+  const std::string strategy = configError("init_strategy: magic\n");
+  EXPECT_NE(strategy.find("init_strategy: "), std::string::npos) << strategy;
+  // Values of the right type that the config rejects name their section.
+  const std::string invalid = configError("ekf:\n  process_noise_position: -1.0\n");
+  EXPECT_NE(invalid.find(": ekf: "), std::string::npos) << invalid;
+  EXPECT_NE(configError("a: [").find("not valid YAML"), std::string::npos);
+  EXPECT_NE(configError("").find("(no error)"), std::string::npos);  // empty: all defaults
+  ReconstructOptions options;
+  EXPECT_THROW(parse({"a.bag", "--config", "/nonexistent/tracker.yaml"}, options),
+               std::invalid_argument);
 }
 
 TEST(ReconstructToolTest, ReportCarriesTheThesisStatistics) {

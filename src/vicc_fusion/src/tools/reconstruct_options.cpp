@@ -1,7 +1,10 @@
 #include "reconstruct_options.hpp"
 
 #include <cstdlib>
+#include <optional>
 #include <stdexcept>
+
+#include "vicc_tracking/tracker_config_yaml.hpp"
 
 namespace vicc_fusion {
 namespace {
@@ -23,13 +26,17 @@ void printReconstructUsage(std::ostream& out) {
          "                        [--frame-step N] [--trajectory OUT.tum] [--cloud OUT.ply]\n"
          "                        [--mesh OUT.ply] [--report OUT.json] [--gt TRUTH.tum]\n"
          "                        [--truth-surface SURFACE.ply] [--frame-to-frame | --no-fusion]\n"
-         "                        [--quiet]\n"
+         "                        [--config TRACKER.yaml] [--quiet]\n"
          "Tracks the depth camera through a depth + IMU recording (thesis 5.4) and fuses the\n"
          "frames into a surfel model it tracks against (frame-to-model, thesis 2.2.2, 5.3).\n"
          "  topics       default to the only Image / CameraInfo / Imu topic in the bag\n"
          "  --init       ICP initial guess: ekf (default, the thesis), identity (KinectFusion),\n"
-         "               constant_velocity, imu (plain IMU integration)\n"
-         "  --levels     image pyramid levels for ICP (default 3)\n"
+         "               constant_velocity, imu (plain IMU integration); overrides --config\n"
+         "  --levels     image pyramid levels for ICP (default 3); overrides --config\n"
+         "  --config     tracker parameters in the tracker node's layout (config/tracker.yaml:\n"
+         "               init_strategy, preprocessing, icp, ekf, still_phase, imu_sync); keys\n"
+         "               left out keep their defaults, unknown keys and wrong types are errors,\n"
+         "               the node-only keys (map_frame, publish_tf, ...) are accepted, unused\n"
          "  --frame-step process every N-th depth frame (thesis: All = 1, 1/2 = 2, 1/4 = 4)\n"
          "  --trajectory camera optical frame in map, TUM format, one line per tracked frame\n"
          "  --cloud      the stable surfels in map: binary PLY with normals, radius, confidence\n"
@@ -37,7 +44,8 @@ void printReconstructUsage(std::ostream& out) {
          "  --frame-to-frame  fuse, but align each frame to the previous one (comparison)\n"
          "  --no-fusion  tracking only, frame-to-frame (no model; --cloud/--mesh not allowed)\n"
          "  --report     JSON: frames processed/lost, ICP iterations, Init_EKF/Init_Id, timings,\n"
-         "               surfel counts, fusion ms per frame, model memory\n"
+         "               surfel counts, fusion ms per frame, model memory, the tracker's\n"
+         "               parameters\n"
          "  --gt         ground-truth TUM trajectory (e.g. from vicc_make_bag --gt): the report\n"
          "               adds the pose error, both aligned at the first tracked frame\n"
          "  --truth-surface  the true surface (vicc_make_bag --surface; needs --gt): the report\n"
@@ -47,6 +55,8 @@ void printReconstructUsage(std::ostream& out) {
 
 bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptions& options,
                              std::ostream& out) {
+  std::optional<vicc_tracking::InitStrategyType> init;
+  std::optional<int> levels;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -63,10 +73,12 @@ bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptio
     } else if (arg == "--imu-topic") {
       options.imu_topic = value();
     } else if (arg == "--init") {
-      options.init = vicc_tracking::initStrategyFromString(value());
+      init = vicc_tracking::initStrategyFromString(value());
     } else if (arg == "--levels") {
-      options.levels = parsePositiveInt(arg, value());
-      if (options.levels > 3) throw std::invalid_argument("--levels must be 1, 2 or 3");
+      levels = parsePositiveInt(arg, value());
+      if (*levels > 3) throw std::invalid_argument("--levels must be 1, 2 or 3");
+    } else if (arg == "--config") {
+      options.config_path = value();
     } else if (arg == "--frame-step") {
       options.frame_step = parsePositiveInt(arg, value());
     } else if (arg == "--trajectory") {
@@ -97,6 +109,13 @@ bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptio
     }
   }
   if (options.bag_path.empty()) throw std::invalid_argument("no bag given");
+  options.tracker = options.config_path.empty()
+                        ? vicc_tracking::TrackerConfig{}
+                        : vicc_tracking::loadTrackerParameters(options.config_path).tracker;
+  if (init) options.tracker.init_strategy = *init;
+  if (levels) options.tracker.preprocessing.pyramid_levels = *levels;
+  options.init = options.tracker.init_strategy;
+  options.levels = options.tracker.preprocessing.pyramid_levels;
   if (!options.fusion && (!options.cloud_path.empty() || !options.mesh_path.empty() ||
                           !options.truth_surface_path.empty())) {
     throw std::invalid_argument(

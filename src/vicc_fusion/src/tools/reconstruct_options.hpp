@@ -4,7 +4,7 @@
 #include <ostream>
 #include <string>
 
-#include "vicc_tracking/init_strategy.hpp"
+#include "vicc_tracking/tracker.hpp"
 
 namespace vicc_fusion {
 
@@ -13,8 +13,12 @@ struct ReconstructOptions {
   std::string depth_topic;  ///< empty: the only sensor_msgs/Image topic
   std::string info_topic;
   std::string imu_topic;
-  vicc_tracking::InitStrategyType init = vicc_tracking::InitStrategyType::kEkf;
-  int levels = 3;
+  /// The tracker's parameters: the defaults, or --config FILE.yaml (the tracker node's
+  /// layout, config/tracker.yaml). --init and --levels override the file.
+  std::string config_path;
+  vicc_tracking::TrackerConfig tracker;
+  vicc_tracking::InitStrategyType init = vicc_tracking::InitStrategyType::kEkf;  ///< = tracker's
+  int levels = 3;  ///< = tracker.preprocessing.pyramid_levels
   int frame_step = 1;
   std::string trajectory_path;
   std::string cloud_path;

@@ -29,15 +29,13 @@ double secondsSince(Clock::time_point start) {
 class Reconstruction {
  public:
   Reconstruction(const vicc_fusion::ReconstructOptions& options, const vicc_tracking::RigBag& bag)
-      : options_(options), bag_(bag) {
-    config_.init_strategy = options.init;
-    config_.preprocessing.pyramid_levels = options.levels;
+      : options_(options), bag_(bag), config_(options.tracker) {
     const bool has_imu = !bag.imuSamples().empty();
     if (vicc_tracking::needsImu(options.init) && !has_imu) {
       throw std::runtime_error("--init " + vicc_tracking::toString(options.init) +
                                " needs IMU data, but the bag has none (try --init identity)");
     }
-    config_.wait_for_imu = has_imu;
+    config_.wait_for_imu = has_imu && options.tracker.wait_for_imu;
     Eigen::Isometry3d imu_to_camera = Eigen::Isometry3d::Identity();
     if (has_imu) {
       if (!bag.imuToCamera()) {

@@ -12,32 +12,9 @@ namespace {
 constexpr double kWarnPeriod = 5.0;  // s between repeats of the same warning
 }
 
-void TrackerRosSettings::validate() const {
-  if (map_frame.empty()) throw std::invalid_argument("map_frame must not be empty");
-  if (max_path_length < 1) throw std::invalid_argument("max_path_length must be >= 1");
-  if (max_pending_frames < 0) throw std::invalid_argument("max_pending_frames must be >= 0");
-}
-
-TrackerRosSettings readTrackerRosSettings(const ros::NodeHandle& private_nh) {
-  TrackerRosSettings settings;
-  readOptionalParam(private_nh, "map_frame", settings.map_frame);
-  readOptionalParam(private_nh, "tf_child_frame", settings.tf_child_frame);
-  readOptionalParam(private_nh, "publish_tf", settings.publish_tf);
-  readOptionalParam(private_nh, "max_path_length", settings.max_path_length);
-  readOptionalParam(private_nh, "max_pending_frames", settings.max_pending_frames);
-  readOptionalParam(private_nh, "initial_pose_frame", settings.initial_pose_frame);
-  try {
-    settings.validate();
-  } catch (const std::exception& error) {
-    throw std::invalid_argument("parameters under " + private_nh.getNamespace() + ": " +
-                                error.what());
-  }
-  return settings;
-}
-
 TrackerRos::TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : config_(readTrackerConfig(private_nh)),
-      settings_(readTrackerRosSettings(private_nh)),
+      settings_(readTrackerNodeSettings(private_nh)),
       tf_listener_(tf_buffer_, nh) {
   odom_pub_ = private_nh.advertise<nav_msgs::Odometry>("odom", 10);
   path_pub_ = private_nh.advertise<nav_msgs::Path>("path", 1, true);

@@ -8,7 +8,7 @@
 
 #include <ros/node_handle.h>
 
-#include "vicc_tracking/tracker.hpp"
+#include "vicc_tracking/tracker_parameters.hpp"
 
 namespace vicc_tracking {
 
@@ -25,7 +25,11 @@ void readOptionalParam(const ros::NodeHandle& nh, const std::string& name, T& va
 }
 
 /// Parameters in the node's private namespace: init_strategy, wait_for_imu, preprocessing/*,
-/// icp/*, ekf/*, still_phase/*, imu_sync/* (see config/tracker.yaml for the full list).
+/// icp/*, ekf/*, still_phase/*, imu_sync/* (the keys are the tables of tracker_parameters.hpp;
+/// config/tracker.yaml lists them with their defaults). Each section is validated.
 TrackerConfig readTrackerConfig(const ros::NodeHandle& private_nh);
+
+/// The node-only settings (map_frame, tf_child_frame, publish_tf, ...) in the same namespace.
+TrackerNodeSettings readTrackerNodeSettings(const ros::NodeHandle& private_nh);
 
 }  // namespace vicc_tracking

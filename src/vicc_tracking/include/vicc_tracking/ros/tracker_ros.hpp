@@ -19,26 +19,9 @@
 #include <tf2_ros/transform_listener.h>
 
 #include "vicc_tracking/tracker.hpp"
+#include "vicc_tracking/tracker_parameters.hpp"
 
 namespace vicc_tracking {
-
-struct TrackerRosSettings {
-  std::string map_frame = "map";
-  /// Frame whose pose in map is published on tf. Empty: the IMU frame (the root of the rig's
-  /// static tree in the usual setup), so map -> imu -> camera stays a tree.
-  std::string tf_child_frame;
-  bool publish_tf = true;
-  int max_path_length = 5000;
-  /// Depth frames held back waiting for IMU data up to their stamp; beyond this the oldest
-  /// is processed with the IMU data that is there.
-  int max_pending_frames = 3;
-  /// If set, the map is aligned so that the first tracked pose equals this frame's pose in
-  /// map_frame (e.g. the simulator's ground truth), for side-by-side display.
-  std::string initial_pose_frame;
-  void validate() const;
-};
-
-TrackerRosSettings readTrackerRosSettings(const ros::NodeHandle& private_nh);
 
 class TrackerRos {
  public:
@@ -53,7 +36,7 @@ class TrackerRos {
                                        const sensor_msgs::Image& depth,
                                        const Eigen::Isometry3d& map_alignment)>;
   void setFrameHook(FrameHook hook) { frame_hook_ = std::move(hook); }
-  const TrackerRosSettings& settings() const { return settings_; }
+  const TrackerNodeSettings& settings() const { return settings_; }
 
  private:
   void onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info);
@@ -70,7 +53,7 @@ class TrackerRos {
   void forwardImu(const ImuSample& sample);
 
   TrackerConfig config_;
-  TrackerRosSettings settings_;
+  TrackerNodeSettings settings_;
   FrameHook frame_hook_;
   std::unique_ptr<Tracker> tracker_;
   std::optional<CameraModel> camera_;
