@@ -132,6 +132,11 @@ TEST(ReconstructToolTest, ConfigFilesOfThePackageLoad) {
   EXPECT_EQ(vicc_tracking::toYaml(defaults), vicc_tracking::toYaml({}));
   ReconstructOptions options;
   EXPECT_TRUE(parse({"a.bag", "--config", (directory + "/tracker.yaml").c_str()}, options));
+  options = ReconstructOptions{};
+  EXPECT_TRUE(parse({"a.bag", "--config", (directory + "/tracker_imu_trusting.yaml").c_str()},
+                    options));
+  EXPECT_NE(options.tracker.ekf.measurement_noise_position,
+            vicc_tracking::EkfConfig{}.measurement_noise_position);
 }
 
 TEST(ReconstructToolTest, ConfigFileRejectsUnknownKeysNamingThem) {
