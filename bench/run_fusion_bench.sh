@@ -11,8 +11,9 @@ set +u; source devel/setup.bash; set -u
 
 SCENARIOS=("$@")
 [ ${#SCENARIOS[@]} -eq 0 ] && SCENARIOS=(hen hen_duplo office hen_slow)
-INITS=(identity ekf constant_velocity imu)
+INITS=(identity ekf constant_velocity imu ekf_imu_noise)
 OUT=bench/out
+source bench/init_args.sh
 mkdir -p "$OUT" bench/results
 
 make_bag() {  # scenario: bag, ground truth and true surface, regenerated when the YAML changes
@@ -31,7 +32,8 @@ for scenario in "${SCENARIOS[@]}"; do
       for levels in 3 2 1; do
         report=$OUT/${scenario}_${init}_s${step}_l${levels}_f2m.json
         echo "bench: $scenario frame-to-model --init $init --frame-step $step --levels $levels" >&2
-        taskset -c 0 rosrun vicc_fusion vicc_reconstruct "$OUT/$scenario.bag" --init "$init" \
+        # shellcheck disable=SC2046
+        taskset -c 0 rosrun vicc_fusion vicc_reconstruct "$OUT/$scenario.bag" $(init_args "$init") \
           --frame-step "$step" --levels "$levels" --gt "$OUT/${scenario}_gt.tum" \
           --truth-surface "$OUT/${scenario}_surface.ply" --report "$report" --quiet \
           2>/dev/null || echo "bench: run failed: $report" >&2

@@ -11,8 +11,9 @@ set +u; source devel/setup.bash; set -u
 
 SCENARIOS=("$@")
 [ ${#SCENARIOS[@]} -eq 0 ] && SCENARIOS=(hen hen_duplo office hen_slow)
-INITS=(identity ekf constant_velocity imu)
+INITS=(identity ekf constant_velocity imu ekf_imu_noise)
 OUT=bench/out
+source bench/init_args.sh
 mkdir -p "$OUT" bench/results
 
 for scenario in "${SCENARIOS[@]}"; do
@@ -27,7 +28,8 @@ for scenario in "${SCENARIOS[@]}"; do
         echo "bench: $scenario --init $init --frame-step $step --levels $levels" >&2
         # One core: the speed figures are single-threaded. Frame-to-frame tracking alone (the
         # tracking issue's pipeline); bench/run_fusion_bench.sh reruns it frame-to-model.
-        taskset -c 0 rosrun vicc_fusion vicc_reconstruct "$bag" --init "$init" --frame-step "$step" \
+        # shellcheck disable=SC2046
+        taskset -c 0 rosrun vicc_fusion vicc_reconstruct "$bag" $(init_args "$init") --frame-step "$step" \
           --levels "$levels" --gt "$OUT/${scenario}_gt.tum" --report "$report" --quiet --no-fusion \
           2>/dev/null || echo "bench: run failed: $report" >&2
       done

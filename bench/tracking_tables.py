@@ -3,10 +3,11 @@ import json
 import os
 import sys
 
-INITS = ["identity", "ekf", "constant_velocity", "imu"]
+INITS = ["identity", "ekf", "constant_velocity", "imu", "ekf_imu_noise"]
 COLUMNS = INITS + ["peer"]
 LABELS = {"identity": "ICP (identity)", "ekf": "ICP+IMU (EKF)", "constant_velocity": "const. vel.",
-          "imu": "IMU only", "peer": "OpenCV ICPOdometry"}
+          "imu": "IMU only", "ekf_imu_noise": "EKF, IMU noise",
+          "peer": "OpenCV ICPOdometry"}
 STEPS = [(1, "All"), (2, "1/2"), (4, "1/4")]
 LEVELS = [3, 2, 1]
 MAX_POSITION, MAX_ROTATION = 0.15, 10.0  # thesis: larger drift is shown in parentheses

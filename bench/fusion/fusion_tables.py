@@ -4,7 +4,7 @@ import json
 import os
 import sys
 
-INITS = ["identity", "ekf", "constant_velocity", "imu"]
+INITS = ["identity", "ekf", "constant_velocity", "imu", "ekf_imu_noise"]
 STEPS = [(1, "All"), (2, "1/2"), (4, "1/4")]
 LEVELS = [3, 2, 1]
 

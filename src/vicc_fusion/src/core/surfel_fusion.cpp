@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+
+#include "vicc_tracking/simd4.hpp"
 
 namespace vicc_fusion {
 namespace {
@@ -129,9 +132,20 @@ FusionFrameStats SurfelFusion::integrate(const vicc_tracking::DepthLevel& frame,
       int matches[64];  // all candidates that pass the tests (at most factor^2 <= 64)
       int match_count = 0;
       const int* cells = index_map_.pixelCells(u, v);
-      for (int cell = 0; cell < cells_per_pixel; ++cell) {
-        const int candidate = cells[cell];
-        if (candidate == IndexMap::kEmpty) continue;
+      // Most cells are empty: find the occupied ones four at a time, then visit only those
+      // (in cell order), instead of a data-dependent branch per cell.
+      uint64_t occupied = 0;
+      int cell = 0;
+      for (; cell + 4 <= cells_per_pixel; cell += 4) {
+        const vicc_tracking::simd::Mask4 used =
+            vicc_tracking::simd::load4(cells + cell) != IndexMap::kEmpty;
+        occupied |= static_cast<uint64_t>(vicc_tracking::simd::bits4(used)) << cell;
+      }
+      for (; cell < cells_per_pixel; ++cell) {
+        occupied |= static_cast<uint64_t>(cells[cell] != IndexMap::kEmpty) << cell;
+      }
+      for (; occupied != 0; occupied &= occupied - 1) {
+        const int candidate = cells[__builtin_ctzll(occupied)];
         const Surfel& surfel = surfels_[candidate];
         const float surfel_depth = index_map_.depthOf(surfel);
         if (surfel_depth < vertex.z() - free_space_margin) {

@@ -21,6 +21,20 @@ inline Float4 load4(const float* p) {
   return v;
 }
 inline void store4(float* p, Float4 v) { std::memcpy(p, &v, sizeof(v)); }
+inline Mask4 load4(const int* p) {
+  Mask4 v;
+  std::memcpy(&v, p, sizeof(v));
+  return v;
+}
+
+/// Bit i set where lane i of the comparison result is true.
+inline unsigned bits4(Mask4 m) {
+#if defined(__SSE__)
+  return static_cast<unsigned>(_mm_movemask_ps((__m128)m));
+#else
+  return (m[0] & 1u) | (m[1] & 2u) | (m[2] & 4u) | (m[3] & 8u);
+#endif
+}
 
 inline float sum4(Float4 v) { return (v[0] + v[1]) + (v[2] + v[3]); }
 
