@@ -78,6 +78,14 @@ class DepthPreprocessor {
   /// The undistorted metric depth alone (used by fusion and tests).
   cv::Mat1f undistort(const cv::Mat1f& metric_depth) const;
 
+  /// A per-pixel image of the sensor (e.g. the ToF amplitude / gray image) moved onto level
+  /// 0's undistorted grid with the same nearest-sensor-pixel mapping as the depth, so each
+  /// pixel's value belongs to the same sensor pixel as its depth. mono8 and mono16 (CV_8UC1,
+  /// CV_16UC1) are scaled to [0, 1]; CV_32FC1 is kept as is, non-finite values become NaN.
+  /// Pixels without a sensor pixel are NaN. Throws std::logic_error without a camera and
+  /// std::invalid_argument when the size or type does not match.
+  cv::Mat1f undistortIntensity(const cv::Mat& sensor_image) const;
+
  private:
   PreprocessingConfig config_;
   CameraModel camera_;

@@ -1,6 +1,7 @@
 #include "vicc_tracking/depth_preprocessing.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -299,6 +300,43 @@ cv::Mat1f DepthPreprocessor::undistort(const cv::Mat1f& metric_depth) const {
   cv::Mat1f undistorted;
   cv::remap(metric_depth, undistorted, undistort_map1_, undistort_map2_, cv::INTER_NEAREST,
             cv::BORDER_CONSTANT, cv::Scalar(0.f));
+  return undistorted;
+}
+
+cv::Mat1f DepthPreprocessor::undistortIntensity(const cv::Mat& sensor_image) const {
+  if (!has_camera_) throw std::logic_error("DepthPreprocessor: no camera set");
+  if (sensor_image.cols != camera_.width || sensor_image.rows != camera_.height) {
+    throw std::invalid_argument("intensity image is " + std::to_string(sensor_image.cols) + "x" +
+                                std::to_string(sensor_image.rows) + " but camera_info says " +
+                                std::to_string(camera_.width) + "x" +
+                                std::to_string(camera_.height));
+  }
+  cv::Mat1f sensor;
+  if (sensor_image.type() == CV_8UC1) {
+    sensor_image.convertTo(sensor, CV_32F, 1.0 / 255.0);
+  } else if (sensor_image.type() == CV_16UC1) {
+    sensor_image.convertTo(sensor, CV_32F, 1.0 / 65535.0);
+  } else if (sensor_image.type() == CV_32FC1) {
+    sensor = sensor_image.clone();
+  } else {
+    throw std::invalid_argument(
+        "unsupported intensity image type (expected mono8, mono16 or 32FC1)");
+  }
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int v = 0; v < sensor.rows; ++v) {
+    float* row = sensor.ptr<float>(v);
+    for (int u = 0; u < sensor.cols; ++u) {
+      if (!std::isfinite(row[u])) row[u] = nan;
+    }
+  }
+  const std::vector<int>& source_index = levels_.front().source_index;
+  if (source_index.empty()) return sensor;  // no distortion: the grids coincide
+  cv::Mat1f undistorted(sensor.rows, sensor.cols, nan);
+  const float* in = sensor.ptr<float>(0);  // continuous: a fresh conversion or clone
+  float* out = undistorted.ptr<float>(0);
+  for (size_t i = 0; i < source_index.size(); ++i) {
+    if (source_index[i] >= 0) out[i] = in[source_index[i]];
+  }
   return undistorted;
 }
 

@@ -119,6 +119,88 @@ TEST(DepthPreprocessingTest, WrongSizeOrTypeThrows) {
   EXPECT_THROW(preprocessor.process(cv::Mat3b(171, 224)), std::invalid_argument);
 }
 
+/// The gray image follows the depth: a depth and a gray image both encoding their sensor
+/// pixel's index land on the same pinhole pixels, for both distortion models and all types.
+TEST(DepthPreprocessingTest, IntensityLandsWhereTheDepthOfTheSameSensorPixelLands) {
+  for (const auto model : {DistortionModel::kPlumbBob, DistortionModel::kEquidistant}) {
+    CameraModel camera = sim::picoFlexxCamera();
+    camera.model = model;
+    camera.distortion = model == DistortionModel::kEquidistant
+                            ? std::vector<double>{0.05, -0.01, 0.002, 0.0}
+                            : std::vector<double>{-0.1, 0.05, 0.001, -0.001, 0.0};
+    ASSERT_TRUE(camera.hasDistortion());
+    PreprocessingConfig config;
+    config.bilateral_filter = false;
+    config.pyramid_levels = 1;
+    DepthPreprocessor preprocessor(config);
+    preprocessor.setCamera(camera);
+    const int width = camera.width, height = camera.height;
+    cv::Mat1f depth(height, width);
+    cv::Mat1w gray16(height, width);
+    cv::Mat1b gray8(height, width);
+    cv::Mat1f gray32(height, width);
+    for (int v = 0; v < height; ++v) {
+      for (int u = 0; u < width; ++u) {
+        const int index = v * width + u;
+        depth(v, u) = 0.5f + 1e-5f * static_cast<float>(index);
+        gray16(v, u) = static_cast<uint16_t>(index);
+        gray8(v, u) = static_cast<uint8_t>((u + 3 * v) % 256);
+        gray32(v, u) = static_cast<float>(index);
+      }
+    }
+    gray32(0, 0) = std::numeric_limits<float>::infinity();
+    const DepthLevel level = preprocessor.process(depth).front();
+    const cv::Mat1f undistorted16 = preprocessor.undistortIntensity(gray16);
+    const cv::Mat1f undistorted8 = preprocessor.undistortIntensity(gray8);
+    const cv::Mat1f undistorted32 = preprocessor.undistortIntensity(gray32);
+    ASSERT_EQ(undistorted16.rows, level.depth.rows);
+    ASSERT_EQ(undistorted16.cols, level.depth.cols);
+    int valid = 0, moved = 0;
+    for (int v = 0; v < height; ++v) {
+      for (int u = 0; u < width; ++u) {
+        const float d = level.depth(v, u);
+        if (d <= 0.f) {  // unmapped: no sensor pixel, no gray
+          EXPECT_TRUE(std::isnan(undistorted16(v, u))) << u << "," << v;
+          EXPECT_TRUE(std::isnan(undistorted8(v, u))) << u << "," << v;
+          continue;
+        }
+        const int index = static_cast<int>(std::lround((d - 0.5f) / 1e-5f));
+        const int su = index % width, sv = index / width;
+        ASSERT_NEAR(undistorted16(v, u) * 65535.f, static_cast<float>(index), 0.02f)
+            << u << "," << v;
+        EXPECT_NEAR(undistorted8(v, u) * 255.f, static_cast<float>((su + 3 * sv) % 256), 1e-3f);
+        if (index == 0) {
+          EXPECT_TRUE(std::isnan(undistorted32(v, u)));
+        } else {
+          EXPECT_EQ(undistorted32(v, u), static_cast<float>(index));
+        }
+        ++valid;
+        if (su != u || sv != v) ++moved;
+      }
+    }
+    EXPECT_GT(valid, width * height * 8 / 10);
+    EXPECT_GT(moved, valid / 2) << "the distortion should move most pixels";
+  }
+}
+
+TEST(DepthPreprocessingTest, IntensityOfWrongSizeOrTypeThrowsAndWithoutDistortionIsScaledOnly) {
+  DepthPreprocessor preprocessor{PreprocessingConfig{}};
+  EXPECT_THROW(preprocessor.undistortIntensity(cv::Mat1w(171, 224)), std::logic_error);
+  CameraModel camera = sim::picoFlexxCamera();
+  camera.distortion.assign(camera.distortion.size(), 0.0);
+  ASSERT_FALSE(camera.hasDistortion());
+  preprocessor.setCamera(camera);
+  EXPECT_THROW(preprocessor.undistortIntensity(cv::Mat1w(10, 10)), std::invalid_argument);
+  EXPECT_THROW(preprocessor.undistortIntensity(cv::Mat1w(224, 171)), std::invalid_argument);
+  EXPECT_THROW(preprocessor.undistortIntensity(cv::Mat3b(171, 224)), std::invalid_argument);
+  EXPECT_THROW(preprocessor.undistortIntensity(cv::Mat1d(171, 224)), std::invalid_argument);
+  cv::Mat1w gray(171, 224, static_cast<uint16_t>(65535));
+  gray(5, 7) = 0;
+  const cv::Mat1f scaled = preprocessor.undistortIntensity(gray);
+  EXPECT_FLOAT_EQ(scaled(0, 0), 1.f);
+  EXPECT_FLOAT_EQ(scaled(5, 7), 0.f);
+}
+
 TEST(CameraModelTest, ProjectUnprojectRoundTripOverTheWholeImage) {
   for (const auto model : {DistortionModel::kPlumbBob, DistortionModel::kEquidistant}) {
     CameraModel camera = sim::picoFlexxCamera();
