@@ -261,7 +261,8 @@ int main(int argc, char** argv) {
   }
   try {
     const vicc_tracking::RigBag bag(options.bag_path,
-                                    {options.depth_topic, options.info_topic, options.imu_topic});
+                                    {options.depth_topic, options.info_topic, options.imu_topic,
+                                     vicc_tracking::RigBagTopics::kNone});
     std::fprintf(stderr, "vicc_reconstruct: %s: %zu depth frames on %s, %zu IMU readings on %s\n",
                  options.bag_path.c_str(), bag.depthFrameCount(), bag.topics().depth.c_str(),
                  bag.imuSamples().size(),

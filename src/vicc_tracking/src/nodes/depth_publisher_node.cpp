@@ -1,6 +1,7 @@
-// Simulated pico flexx driver: depth image + camera_info at the scenario's frame rate, and
-// the ground-truth camera pose on tf (map -> <camera frame>_gt). Runs as its own process,
-// like the real driver; imu_publisher shares its time base (see rig_clock.hpp).
+// Simulated pico flexx driver: depth image, amplitude (gray) image and camera_info at the
+// scenario's frame rate, and the ground-truth camera pose on tf (map -> <camera frame>_gt).
+// Runs as its own process, like the real driver; imu_publisher shares its time base (see
+// rig_clock.hpp).
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
@@ -20,6 +21,7 @@ int main(int argc, char** argv) {
     const bool publish_ground_truth = private_nh.param("publish_ground_truth", true);
     ros::Publisher depth_pub =
         nh.advertise<sensor_msgs::Image>(vicc_tracking::RigTopics::kDepth, 5);
+    ros::Publisher gray_pub = nh.advertise<sensor_msgs::Image>(vicc_tracking::RigTopics::kGray, 5);
     ros::Publisher info_pub =
         nh.advertise<sensor_msgs::CameraInfo>(vicc_tracking::RigTopics::kCameraInfo, 5);
     tf2_ros::TransformBroadcaster tf_broadcaster;
@@ -36,11 +38,18 @@ int main(int argc, char** argv) {
       const double run_offset = run * vicc_tracking::loopPeriod(rig);
       for (size_t k = 0; k < times.size() && ros::ok(); ++k) {
         const ros::Time stamp = t0 + ros::Duration(run_offset + times[k]);
-        const sensor_msgs::Image image =
-            vicc_tracking::rigDepthMessage(rig, static_cast<int>(k), stamp);
+        // The amplitude image costs a raycast pass only when someone listens.
+        const bool gray_wanted = gray_pub.getNumSubscribers() > 0;
+        vicc_tracking::RigImages images;
+        if (gray_wanted) {
+          images = vicc_tracking::rigImageMessages(rig, static_cast<int>(k), stamp);
+        } else {
+          images.depth = vicc_tracking::rigDepthMessage(rig, static_cast<int>(k), stamp);
+        }
         ros::Time::sleepUntil(stamp);
         info_pub.publish(vicc_tracking::rigCameraInfo(rig, stamp));
-        depth_pub.publish(image);
+        depth_pub.publish(images.depth);
+        if (gray_wanted) gray_pub.publish(images.gray);
         if (publish_ground_truth) {
           const auto truth = vicc_tracking::rigGroundTruth(rig, times[k], stamp);
           tf_broadcaster.sendTransform(truth);

@@ -78,6 +78,60 @@ cv::Mat depthImageView(const sensor_msgs::Image& image) {
                  const_cast<uint8_t*>(image.data.data()), image.step);
 }
 
+cv::Mat intensityImageView(const sensor_msgs::Image& image) {
+  namespace enc = sensor_msgs::image_encodings;
+  int type = -1;
+  size_t element_size = 0;
+  if (image.encoding == enc::MONO8 || image.encoding == enc::TYPE_8UC1) {
+    type = CV_8UC1;
+    element_size = 1;
+  } else if (image.encoding == enc::MONO16 || image.encoding == enc::TYPE_16UC1) {
+    type = CV_16UC1;
+    element_size = 2;
+  } else if (image.encoding == enc::TYPE_32FC1) {
+    type = CV_32FC1;
+    element_size = 4;
+  } else {
+    throw std::invalid_argument("gray image has encoding '" + image.encoding +
+                                "'; expected mono8, mono16 or 32FC1");
+  }
+  if (image.width == 0 || image.height == 0) {
+    throw std::invalid_argument("gray image is empty (0 width or height)");
+  }
+  if (image.step < image.width * element_size ||
+      image.data.size() < static_cast<size_t>(image.step) * image.height) {
+    std::ostringstream message;
+    message << "gray image " << image.width << "x" << image.height << " has step " << image.step
+            << " and " << image.data.size() << " bytes of data: too small";
+    throw std::invalid_argument(message.str());
+  }
+  if (image.is_bigendian && element_size > 1) {
+    throw std::invalid_argument("gray image is big-endian; only little-endian is supported");
+  }
+  return cv::Mat(static_cast<int>(image.height), static_cast<int>(image.width), type,
+                 const_cast<uint8_t*>(image.data.data()), image.step);
+}
+
+bool isGrayEncoding(const std::string& encoding) {
+  return encoding == sensor_msgs::image_encodings::MONO8 ||
+         encoding == sensor_msgs::image_encodings::MONO16;
+}
+
+sensor_msgs::Image mono16ImageMessage(const cv::Mat& gray) {
+  if (gray.type() != CV_16UC1) throw std::invalid_argument("mono16ImageMessage expects CV_16UC1");
+  sensor_msgs::Image image;
+  image.encoding = sensor_msgs::image_encodings::MONO16;
+  image.width = static_cast<uint32_t>(gray.cols);
+  image.height = static_cast<uint32_t>(gray.rows);
+  image.step = image.width * sizeof(uint16_t);
+  image.is_bigendian = 0;
+  image.data.resize(static_cast<size_t>(image.step) * image.height);
+  for (int row = 0; row < gray.rows; ++row) {
+    std::memcpy(&image.data[static_cast<size_t>(row) * image.step], gray.ptr(row), image.step);
+  }
+  return image;
+}
+
 sensor_msgs::Image depthImageMessage(const cv::Mat& depth_metres) {
   if (depth_metres.type() != CV_32FC1) {
     throw std::invalid_argument("depthImageMessage expects a CV_32FC1 image");

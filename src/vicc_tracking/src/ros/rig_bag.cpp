@@ -1,6 +1,7 @@
 #include "vicc_tracking/ros/rig_bag.hpp"
 
 #include <algorithm>
+#include <deque>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -48,6 +49,15 @@ std::string chooseTopic(const std::map<std::string, std::string>& topic_types,
                            " ); choose one with " + option);
 }
 
+/// The encoding of the topic's first image ("" when it has none).
+std::string firstEncoding(rosbag::Bag& bag, const std::string& topic) {
+  rosbag::View view(bag, rosbag::TopicQuery(topic));
+  for (const rosbag::MessageInstance& message : view) {
+    if (const auto image = message.instantiate<sensor_msgs::Image>()) return image->encoding;
+  }
+  return "";
+}
+
 }  // namespace
 
 RigBag::RigBag(const std::string& path, const RigBagTopics& requested) : path_(path) {
@@ -66,7 +76,39 @@ void RigBag::detectTopics(const RigBagTopics& requested) {
   for (const rosbag::ConnectionInfo* connection : all.getConnections()) {
     topic_types[connection->topic] = connection->datatype;
   }
-  topics_.depth = chooseTopic(topic_types, requested.depth, kImageType, true, "--depth-topic");
+  // Image topics carrying a gray image (the pico flexx's image_mono8/image_mono16).
+  std::set<std::string> gray_topics;
+  for (const auto& [topic, topic_type] : topic_types) {
+    if (topic_type == kImageType && isGrayEncoding(firstEncoding(bag_, topic))) {
+      gray_topics.insert(topic);
+    }
+  }
+  std::map<std::string, std::string> depth_types = topic_types;
+  if (requested.depth.empty() && gray_topics.size() > 0) {
+    // Leave the gray topics out of the depth's choice, unless they are all there is (a
+    // driver may publish millimetre depth as mono16).
+    std::map<std::string, std::string> without_gray;
+    bool other_images = false;
+    for (const auto& [topic, topic_type] : topic_types) {
+      if (gray_topics.count(topic)) continue;
+      without_gray[topic] = topic_type;
+      other_images = other_images || topic_type == kImageType;
+    }
+    if (other_images) depth_types = without_gray;
+  }
+  topics_.depth = chooseTopic(depth_types, requested.depth, kImageType, true, "--depth-topic");
+  if (requested.intensity == RigBagTopics::kNone) {
+    topics_.intensity.clear();
+  } else if (!requested.intensity.empty()) {
+    topics_.intensity =
+        chooseTopic(topic_types, requested.intensity, kImageType, true, "--intensity-topic");
+    if (topics_.intensity == topics_.depth) {
+      throw std::runtime_error("the intensity topic " + topics_.intensity + " is the depth topic");
+    }
+  } else {
+    gray_topics.erase(topics_.depth);
+    topics_.intensity = gray_topics.size() == 1 ? *gray_topics.begin() : "";
+  }
   topics_.camera_info =
       chooseTopic(topic_types, requested.camera_info, kInfoType, true, "--info-topic");
   topics_.imu = chooseTopic(topic_types, requested.imu, kImuType, false, "--imu-topic");
@@ -139,6 +181,70 @@ void RigBag::forEachDepthFrame(
     }
     if (auto image = message.instantiate<sensor_msgs::Image>()) on_frame(image, info);
   }
+}
+
+void RigBag::forEachFrame(
+    const std::function<void(const sensor_msgs::ImageConstPtr&,
+                             const sensor_msgs::CameraInfoConstPtr&,
+                             const sensor_msgs::ImageConstPtr&)>& on_frame) const {
+  if (topics_.intensity.empty()) {
+    forEachDepthFrame(
+        [&](const sensor_msgs::ImageConstPtr& depth, const sensor_msgs::CameraInfoConstPtr& info) {
+          on_frame(depth, info, nullptr);
+        });
+    return;
+  }
+  // Depth frames wait (in order) for their gray image until 1 s of bag time has passed;
+  // gray images recorded before their depth wait as long.
+  struct Pending {
+    sensor_msgs::ImageConstPtr depth;
+    sensor_msgs::CameraInfoConstPtr info;
+    sensor_msgs::ImageConstPtr gray;
+    ros::Time received;
+  };
+  const ros::Duration window(1.0);
+  std::deque<Pending> pending;
+  std::map<ros::Time, std::pair<sensor_msgs::ImageConstPtr, ros::Time>> early_gray;
+  auto flush = [&](const ros::Time& now, bool all) {
+    while (!pending.empty() &&
+           (all || pending.front().gray || now - pending.front().received > window)) {
+      on_frame(pending.front().depth, pending.front().info, pending.front().gray);
+      pending.pop_front();
+    }
+    for (auto it = early_gray.begin(); it != early_gray.end();) {
+      it = (all || now - it->second.second > window) ? early_gray.erase(it) : std::next(it);
+    }
+  };
+  rosbag::View view(bag_,
+                    rosbag::TopicQuery({topics_.depth, topics_.camera_info, topics_.intensity}));
+  sensor_msgs::CameraInfoConstPtr info = first_camera_info_;
+  for (const rosbag::MessageInstance& message : view) {
+    const ros::Time now = message.getTime();
+    if (message.getTopic() == topics_.camera_info) {
+      if (auto latest = message.instantiate<sensor_msgs::CameraInfo>()) info = latest;
+    } else if (message.getTopic() == topics_.depth) {
+      if (auto image = message.instantiate<sensor_msgs::Image>()) {
+        Pending frame{image, info, nullptr, now};
+        const auto found = early_gray.find(image->header.stamp);
+        if (found != early_gray.end()) {
+          frame.gray = found->second.first;
+          early_gray.erase(found);
+        }
+        pending.push_back(std::move(frame));
+      }
+    } else if (auto gray = message.instantiate<sensor_msgs::Image>()) {
+      auto waiting = std::find_if(pending.begin(), pending.end(), [&](const Pending& frame) {
+        return !frame.gray && frame.depth->header.stamp == gray->header.stamp;
+      });
+      if (waiting != pending.end()) {
+        waiting->gray = gray;
+      } else {
+        early_gray[gray->header.stamp] = {gray, now};
+      }
+    }
+    flush(now, false);
+  }
+  flush(ros::Time(), true);
 }
 
 }  // namespace vicc_tracking

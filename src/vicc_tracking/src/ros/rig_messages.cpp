@@ -12,6 +12,17 @@ sensor_msgs::Image rigDepthMessage(const sim::RigSimulator& rig, int frame_index
   return image;
 }
 
+RigImages rigImageMessages(const sim::RigSimulator& rig, int frame_index, const ros::Time& stamp) {
+  const sim::RigSimulator::Frame frame = rig.renderFrame(frame_index);
+  RigImages images;
+  images.depth = depthImageMessage(frame.depth);
+  images.depth.header.stamp = stamp;
+  images.depth.header.frame_id = rig.scenario().frame_camera;
+  images.gray = mono16ImageMessage(frame.amplitude);
+  images.gray.header = images.depth.header;
+  return images;
+}
+
 sensor_msgs::CameraInfo rigCameraInfo(const sim::RigSimulator& rig, const ros::Time& stamp) {
   sensor_msgs::CameraInfo info = cameraInfoFromModel(rig.scenario().camera);
   info.header.stamp = stamp;

@@ -1,5 +1,6 @@
 #include "vicc_tracking/sim/rig_simulator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -16,6 +17,7 @@ uint64_t mixSeed(uint64_t seed, uint64_t stream, uint64_t index) {
 
 constexpr uint64_t kDepthStream = 1;
 constexpr uint64_t kImuStream = 2;
+constexpr uint64_t kAmplitudeStream = 3;
 
 std::vector<double> sampleTimes(double rate, double duration) {
   std::vector<double> times;
@@ -67,9 +69,12 @@ ImuSample RigSimulator::idealImuSample(double t) const {
   return sample;
 }
 
-cv::Mat RigSimulator::renderDepthNoiseFree(double t) const {
+cv::Mat RigSimulator::renderDepthNoiseFree(double t) const { return renderClean(t, nullptr); }
+
+cv::Mat1f RigSimulator::renderClean(double t, cv::Mat1f* amplitude) const {
   const CameraModel& camera = scenario_.camera;
   cv::Mat1f depth(camera.height, camera.width, 0.f);
+  if (amplitude) *amplitude = cv::Mat1f(camera.height, camera.width, 0.f);
   const Eigen::Isometry3d pose = cameraPose(t);
   const Eigen::Matrix3d& rotation = pose.linear();
   const Eigen::Vector3d origin = pose.translation();
@@ -80,19 +85,39 @@ cv::Mat RigSimulator::renderDepthNoiseFree(double t) const {
       const Eigen::Vector2d& ray = rays_[static_cast<size_t>(v) * camera.width + u];
       // Direction (x, y, 1) in the camera: the ray parameter is the z-depth.
       const Eigen::Vector3d direction = rotation * Eigen::Vector3d(ray.x(), ray.y(), 1.0);
-      const auto hit = scene_.raycast(origin, direction);
-      if (hit && *hit >= tof.min_range && *hit <= tof.max_range) row[u] = static_cast<float>(*hit);
+      const auto hit = scene_.raycastHit(origin, direction);
+      if (!hit || hit->t < tof.min_range || hit->t > tof.max_range) continue;
+      row[u] = static_cast<float>(hit->t);
+      if (!amplitude) continue;
+      // Lambertian return: albedo * cos(incidence) / range^2 (the ToF illumination is at the
+      // camera, so incidence and emergence angles coincide).
+      const double length = direction.norm();
+      const double range = hit->t * length;
+      const double cos_incidence = std::abs(hit->normal.dot(direction)) / length;
+      const double albedo = scene_.primitives()[hit->primitive].albedo;
+      (*amplitude)(v, u) =
+          static_cast<float>(tof.amplitude_scale * albedo * cos_incidence / (range * range));
     }
   }
   return depth;
 }
 
 cv::Mat RigSimulator::renderDepth(int frame_index) const {
+  return renderNoisy(frame_index, false).depth;
+}
+
+RigSimulator::Frame RigSimulator::renderFrame(int frame_index) const {
+  return renderNoisy(frame_index, true);
+}
+
+RigSimulator::Frame RigSimulator::renderNoisy(int frame_index, bool with_amplitude) const {
   const std::vector<double>& times = depth_times_;
   if (frame_index < 0 || frame_index >= static_cast<int>(times.size())) {
     throw std::out_of_range("depth frame index out of range");
   }
-  const cv::Mat1f clean = renderDepthNoiseFree(times[frame_index]);
+  cv::Mat1f clean_amplitude;
+  const cv::Mat1f clean =
+      renderClean(times[frame_index], with_amplitude ? &clean_amplitude : nullptr);
   cv::Mat1f noisy = clean.clone();
   std::mt19937_64 rng(mixSeed(scenario_.seed, kDepthStream, static_cast<uint64_t>(frame_index)));
   std::normal_distribution<float> gaussian(0.f, 1.f);
@@ -122,7 +147,24 @@ cv::Mat RigSimulator::renderDepth(int frame_index) const {
       noisy(v, u) = (measured >= tof.min_range && measured <= tof.max_range) ? measured : 0.f;
     }
   }
-  return noisy;
+  Frame frame;
+  frame.depth = noisy;
+  if (!with_amplitude) return frame;
+  // Its own random stream: the depth stays what it was without the amplitude.
+  std::mt19937_64 amplitude_rng(
+      mixSeed(scenario_.seed, kAmplitudeStream, static_cast<uint64_t>(frame_index)));
+  std::normal_distribution<float> amplitude_noise(0.f, 1.f);
+  const float sigma = static_cast<float>(tof.amplitude_sigma);
+  cv::Mat1w amplitude(clean.rows, clean.cols, static_cast<uint16_t>(0));
+  for (int v = 0; v < clean.rows; ++v) {
+    for (int u = 0; u < clean.cols; ++u) {
+      if (noisy(v, u) <= 0.f) continue;
+      const float value = clean_amplitude(v, u) + sigma * amplitude_noise(amplitude_rng);
+      amplitude(v, u) = static_cast<uint16_t>(std::lround(std::clamp(value, 0.f, 65535.f)));
+    }
+  }
+  frame.amplitude = amplitude;
+  return frame;
 }
 
 ImuSample RigSimulator::imuSample(int index) const {

@@ -104,6 +104,10 @@ Primitive readPrimitive(const Reader& reader, const YAML::Node& node, size_t ind
   if (!(primitive.half_size.minCoeff() > 0.0) || !primitive.half_size.allFinite()) {
     reader.fail(path + "size", "must be positive");
   }
+  primitive.albedo = reader.getOr<double>(node, "albedo", path, 1.0);
+  if (!(primitive.albedo >= 0.0) || !std::isfinite(primitive.albedo)) {
+    reader.fail(path + "albedo", "must be a finite number >= 0");
+  }
   return primitive;
 }
 
@@ -142,6 +146,10 @@ void TofNoiseConfig::validate() const {
   if (!(min_range >= 0.0 && max_range > min_range)) {
     throw std::invalid_argument("tof: need 0 <= min_range < max_range");
   }
+  if (!(amplitude_scale > 0.0 && amplitude_scale < 1e9) ||
+      !(amplitude_sigma >= 0.0 && amplitude_sigma < 1e9)) {
+    throw std::invalid_argument("tof: need amplitude_scale > 0 and amplitude_sigma >= 0");
+  }
 }
 
 void ImuNoiseConfig::validate() const {
@@ -161,6 +169,11 @@ void Scenario::validate() const {
   imu.validate();
   trajectory.validate();
   if (scene.empty()) throw std::invalid_argument("scene: no primitives");
+  for (size_t i = 0; i < scene.size(); ++i) {
+    if (!(scene[i].albedo >= 0.0) || !std::isfinite(scene[i].albedo)) {
+      throw std::invalid_argument("scene[" + std::to_string(i) + "]/albedo must be >= 0");
+    }
+  }
   const Eigen::Matrix3d r = imu_to_camera.linear();
   if ((r * r.transpose() - Eigen::Matrix3d::Identity()).norm() > 1e-6) {
     throw std::invalid_argument("extrinsic is not a rotation");
@@ -237,6 +250,8 @@ Scenario loadScenario(const std::string& name_or_path) {
     t.dropout_probability = reader.getOr(tof, "dropout_probability", "tof/", t.dropout_probability);
     t.min_range = reader.getOr(tof, "min_range", "tof/", t.min_range);
     t.max_range = reader.getOr(tof, "max_range", "tof/", t.max_range);
+    t.amplitude_scale = reader.getOr(tof, "amplitude_scale", "tof/", t.amplitude_scale);
+    t.amplitude_sigma = reader.getOr(tof, "amplitude_sigma", "tof/", t.amplitude_sigma);
   }
   if (const YAML::Node imu = root["imu"]) {
     auto& i = scenario.imu;

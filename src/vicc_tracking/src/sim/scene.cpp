@@ -75,6 +75,38 @@ std::optional<double> hitCylinder(const Eigen::Vector3d& o, const Eigen::Vector3
   return best;
 }
 
+/// Outward unit normal at the surface point p (local coordinates) of a primitive.
+Eigen::Vector3d localNormal(PrimitiveType type, const Eigen::Vector3d& p,
+                            const Eigen::Vector3d& h) {
+  switch (type) {
+    case PrimitiveType::kBox: {
+      // The face the point lies on: the axis where it is relatively closest to the face.
+      int axis = 0;
+      double closest = kInfinity;
+      for (int i = 0; i < 3; ++i) {
+        const double gap = std::abs(h[i] - std::abs(p[i]));
+        if (gap < closest) {
+          closest = gap;
+          axis = i;
+        }
+      }
+      Eigen::Vector3d n = Eigen::Vector3d::Zero();
+      n[axis] = p[axis] < 0.0 ? -1.0 : 1.0;
+      return n;
+    }
+    case PrimitiveType::kEllipsoid:
+      return p.cwiseQuotient(h.cwiseProduct(h)).normalized();
+    case PrimitiveType::kCylinder: {
+      const double radial = std::hypot(p.x(), p.y());
+      if (std::abs(h.z() - std::abs(p.z())) < std::abs(h.x() - radial) || radial == 0.0) {
+        return Eigen::Vector3d(0.0, 0.0, p.z() < 0.0 ? -1.0 : 1.0);
+      }
+      return Eigen::Vector3d(p.x() / radial, p.y() / radial, 0.0);
+    }
+  }
+  return Eigen::Vector3d::UnitZ();
+}
+
 }  // namespace
 
 Scene::Scene(std::vector<Primitive> primitives) : primitives_(std::move(primitives)) {
@@ -88,9 +120,18 @@ Scene::Scene(std::vector<Primitive> primitives) : primitives_(std::move(primitiv
 
 std::optional<double> Scene::raycast(const Eigen::Vector3d& origin,
                                      const Eigen::Vector3d& direction, double min_t) const {
+  const std::optional<RayHit> hit = raycastHit(origin, direction, min_t);
+  if (!hit) return std::nullopt;
+  return hit->t;
+}
+
+std::optional<RayHit> Scene::raycastHit(const Eigen::Vector3d& origin,
+                                        const Eigen::Vector3d& direction, double min_t) const {
   std::optional<double> best;
+  size_t best_index = 0;
   const double direction_squared = direction.squaredNorm();
-  for (const Prepared& item : prepared_) {
+  for (size_t index = 0; index < prepared_.size(); ++index) {
+    const Prepared& item = prepared_[index];
     // Bounding-sphere rejection: most primitives are nowhere near most rays.
     const Eigen::Vector3d to_center = item.primitive.center - origin;
     const double along = to_center.dot(direction) / direction_squared;
@@ -112,9 +153,21 @@ std::optional<double> Scene::raycast(const Eigen::Vector3d& origin,
         hit = hitCylinder(o, d, item.primitive.half_size.x(), item.primitive.half_size.z(), min_t);
         break;
     }
-    if (hit && (!best || *hit < *best)) best = hit;
+    if (hit && (!best || *hit < *best)) {
+      best = hit;
+      best_index = index;
+    }
   }
-  return best;
+  if (!best) return std::nullopt;
+  RayHit result;
+  result.t = *best;
+  result.primitive = best_index;
+  const Prepared& item = prepared_[best_index];
+  const Eigen::Vector3d p =
+      item.world_to_local * (origin + *best * direction - item.primitive.center);
+  result.normal = item.world_to_local.transpose() *
+                  localNormal(item.primitive.type, p, item.primitive.half_size);
+  return result;
 }
 
 bool Scene::inside(const Eigen::Vector3d& point, double margin) const {

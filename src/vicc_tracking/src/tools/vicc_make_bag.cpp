@@ -125,8 +125,10 @@ int main(int argc, char** argv) {
       }
       const ros::Time stamp = t0 + ros::Duration(depth_times[k]);
       bag.write(RigTopics::kCameraInfo, stamp, vicc_tracking::rigCameraInfo(rig, stamp));
-      bag.write(RigTopics::kDepth, stamp,
-                vicc_tracking::rigDepthMessage(rig, static_cast<int>(k), stamp));
+      const vicc_tracking::RigImages images =
+          vicc_tracking::rigImageMessages(rig, static_cast<int>(k), stamp);
+      bag.write(RigTopics::kDepth, stamp, images.depth);
+      bag.write(RigTopics::kGray, stamp, images.gray);
       tf2_msgs::TFMessage ground_truth;
       ground_truth.transforms.push_back(vicc_tracking::rigGroundTruth(rig, depth_times[k], stamp));
       bag.write("/tf", stamp, ground_truth);

@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <rosbag/bag.h>
 #include <sensor_msgs/image_encodings.h>
 
 #include "vicc_tracking/ros/conversions.hpp"
+#include "vicc_tracking/ros/rig_bag.hpp"
 #include "vicc_tracking/ros/rig_messages.hpp"
 
 using namespace vicc_tracking;
@@ -54,6 +56,84 @@ TEST_F(RigMessagesTest, DepthAndCameraInfoMatchThePicoFlexx) {
     for (int u = 0; u < view.cols; ++u) valid += view.at<float>(v, u) > 0.f;
   }
   EXPECT_GT(valid, view.rows * view.cols / 2) << "the scene should fill most of the view";
+}
+
+TEST_F(RigMessagesTest, GrayImageIsMono16WithTheDepthsHeaderAndZeroWithoutDepth) {
+  const RigImages images = rigImageMessages(rig_, 3, t0_);
+  EXPECT_EQ(images.gray.encoding, sensor_msgs::image_encodings::MONO16);
+  EXPECT_EQ(images.gray.header.stamp, images.depth.header.stamp);
+  EXPECT_EQ(images.gray.header.frame_id, images.depth.header.frame_id);
+  EXPECT_EQ(images.depth.data, rigDepthMessage(rig_, 3, t0_).data);
+  const cv::Mat1f depth = depthImageView(images.depth);
+  const cv::Mat1w gray = intensityImageView(images.gray);
+  ASSERT_EQ(gray.size(), depth.size());
+  int lit = 0, valid = 0;
+  for (int v = 0; v < gray.rows; ++v) {
+    for (int u = 0; u < gray.cols; ++u) {
+      if (depth(v, u) <= 0.f) {
+        EXPECT_EQ(gray(v, u), 0);
+      } else {
+        ++valid;
+        lit += gray(v, u) > 0;
+      }
+    }
+  }
+  EXPECT_GT(lit, valid * 99 / 100);
+  sensor_msgs::Image bad = images.gray;
+  bad.encoding = "rgb8";
+  EXPECT_THROW(intensityImageView(bad), std::invalid_argument);
+  bad = images.gray;
+  bad.data.resize(10);
+  EXPECT_THROW(intensityImageView(bad), std::invalid_argument);
+}
+
+/// A bag with depth and gray: the depth topic is still found alone, the gray one too, and
+/// frames get the gray image of their stamp in whichever order the two were recorded.
+TEST_F(RigMessagesTest, RigBagFindsTheGrayTopicAndMatchesItByStamp) {
+  const std::string path = ::testing::TempDir() + "vicc_gray_test.bag";
+  {
+    rosbag::Bag bag(path, rosbag::bagmode::Write);
+    for (int k = 0; k < 4; ++k) {
+      const ros::Time stamp = t0_ + ros::Duration(0.1 * k);
+      const RigImages images = rigImageMessages(rig_, k, stamp);
+      bag.write(RigTopics::kCameraInfo, stamp, rigCameraInfo(rig_, stamp));
+      if (k == 1) bag.write(RigTopics::kGray, stamp, images.gray);  // gray first
+      bag.write(RigTopics::kDepth, stamp, images.depth);
+      if (k == 0 || k == 3) bag.write(RigTopics::kGray, stamp + ros::Duration(0.05), images.gray);
+      // frame 2: no gray image
+    }
+  }
+  const RigBag bag(path, {});
+  EXPECT_EQ(bag.topics().depth, RigTopics::kDepth);
+  EXPECT_EQ(bag.topics().intensity, RigTopics::kGray);
+  std::vector<bool> with_gray;
+  bag.forEachFrame([&](const sensor_msgs::ImageConstPtr& depth,
+                       const sensor_msgs::CameraInfoConstPtr& info,
+                       const sensor_msgs::ImageConstPtr& gray) {
+    ASSERT_TRUE(info);
+    if (gray) {
+      EXPECT_EQ(gray->header.stamp, depth->header.stamp);
+    }
+    with_gray.push_back(static_cast<bool>(gray));
+  });
+  EXPECT_EQ(with_gray, (std::vector<bool>{true, true, false, true}));
+  RigBagTopics no_gray;
+  no_gray.intensity = RigBagTopics::kNone;
+  const RigBag without(path, no_gray);
+  EXPECT_TRUE(without.topics().intensity.empty());
+  int frames = 0;
+  without.forEachFrame([&](const sensor_msgs::ImageConstPtr&,
+                           const sensor_msgs::CameraInfoConstPtr&,
+                           const sensor_msgs::ImageConstPtr& gray) {
+    EXPECT_FALSE(gray);
+    ++frames;
+  });
+  EXPECT_EQ(frames, 4);
+  RigBagTopics named;
+  named.intensity = RigTopics::kDepth;
+  EXPECT_THROW(RigBag(path, named), std::runtime_error);  // the depth itself
+  named.intensity = "/no/such/topic";
+  EXPECT_THROW(RigBag(path, named), std::runtime_error);
 }
 
 TEST_F(RigMessagesTest, GroundTruthIsTheSimulatorPose) {

@@ -115,6 +115,68 @@ TEST_F(RigSimulatorTest, NoisyDepthIsDeterministicWithTheConfiguredSigma) {
   EXPECT_NEAR(static_cast<double>(dropouts) / valid, 0.01, 0.005);
 }
 
+TEST_F(RigSimulatorTest, AmplitudeIsLambertianWithTheObjectsAlbedoAndZeroWithoutDepth) {
+  Scenario scenario = rig_.scenario();
+  scenario.tof.amplitude_sigma = 0.0;
+  scenario.tof.flying_pixel_probability = 0.0;
+  scenario.scene.front().albedo = 0.5;
+  const RigSimulator rig(scenario);
+  const int frame_index = 40;
+  const RigSimulator::Frame frame = rig.renderFrame(frame_index);
+  ASSERT_EQ(frame.amplitude.type(), CV_16UC1);
+  // The depth is the one renderDepth gives: the amplitude has its own noise stream.
+  EXPECT_EQ(cv::norm(frame.depth, rig.renderDepth(frame_index), cv::NORM_INF), 0.0);
+  const cv::Mat1f depth = frame.depth;
+  const cv::Mat1w amplitude = frame.amplitude;
+  const Eigen::Isometry3d pose = rig.cameraPose(rig.depthTimes()[frame_index]);
+  const CameraModel& camera = scenario.camera;
+  int checked = 0, first_object = 0;
+  for (int v = 0; v < depth.rows; ++v) {
+    for (int u = 0; u < depth.cols; ++u) {
+      if (depth(v, u) <= 0.f) {
+        EXPECT_EQ(amplitude(v, u), 0) << u << "," << v;
+        continue;
+      }
+      if ((u + v) % 5 != 0) continue;
+      const Eigen::Vector2d ray = camera.unprojectToNormalized(Eigen::Vector2d(u, v));
+      const Eigen::Vector3d direction = pose.linear() * Eigen::Vector3d(ray.x(), ray.y(), 1.0);
+      const auto hit = rig.scene().raycastHit(pose.translation(), direction);
+      ASSERT_TRUE(hit.has_value());
+      const double range = hit->t * direction.norm();
+      const double cos_incidence = std::abs(hit->normal.dot(direction.normalized()));
+      const double albedo = hit->primitive == 0 ? 0.5 : 1.0;
+      const double expected = std::min(
+          65535.0, scenario.tof.amplitude_scale * albedo * cos_incidence / (range * range));
+      EXPECT_NEAR(amplitude(v, u), expected, 0.5 + 1e-3 * expected) << u << "," << v;
+      ++checked;
+      if (hit->primitive == 0) ++first_object;
+    }
+  }
+  EXPECT_GT(checked, 3000);
+  EXPECT_GT(first_object, 100);
+}
+
+TEST_F(RigSimulatorTest, AmplitudeNoiseIsDeterministicWithTheConfiguredSigma) {
+  const RigSimulator::Frame a = rig_.renderFrame(40);
+  const RigSimulator::Frame b = rig_.renderFrame(40);
+  EXPECT_EQ(cv::norm(a.amplitude, b.amplitude, cv::NORM_INF), 0.0);
+  Scenario quiet = rig_.scenario();
+  quiet.tof.amplitude_sigma = 0.0;
+  const cv::Mat1w clean = RigSimulator(quiet).renderFrame(40).amplitude;
+  const cv::Mat1w noisy = a.amplitude;
+  double sum_squares = 0.0;
+  int n = 0;
+  for (int v = 0; v < clean.rows; ++v) {
+    for (int u = 0; u < clean.cols; ++u) {
+      if (clean(v, u) < 100 || clean(v, u) > 60000) continue;
+      sum_squares += std::pow(static_cast<double>(noisy(v, u)) - clean(v, u), 2);
+      ++n;
+    }
+  }
+  ASSERT_GT(n, 5000);
+  EXPECT_NEAR(std::sqrt(sum_squares / n), rig_.scenario().tof.amplitude_sigma, 0.5);
+}
+
 TEST_F(RigSimulatorTest, TimesCoverTheRunAtTheConfiguredRates) {
   EXPECT_DOUBLE_EQ(rig_.depthTimes().front(), 0.0);
   EXPECT_NEAR(rig_.depthTimes()[1], 1.0 / 15.0, 1e-12);

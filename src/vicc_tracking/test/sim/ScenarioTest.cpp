@@ -46,6 +46,24 @@ TEST(ScenarioTest, MinimalFileUsesPicoFlexxDefaults) {
   EXPECT_EQ(scenario.camera.height, 171);
   EXPECT_DOUBLE_EQ(scenario.depth_rate_hz, 15.0);
   EXPECT_DOUBLE_EQ(scenario.imu.rate_hz, 200.0);
+  EXPECT_DOUBLE_EQ(scenario.scene.front().albedo, 1.0);
+}
+
+TEST(ScenarioTest, AlbedoAndAmplitudeNoiseAreReadAndChecked) {
+  std::string with_albedo = kMinimal;
+  with_albedo.replace(with_albedo.find("size: [1, 1, 0.04]}"), 19,
+                      "size: [1, 1, 0.04], albedo: 0.3}");
+  const std::string path = ::testing::TempDir() + "vicc_albedo_scenario.yaml";
+  std::ofstream(path) << with_albedo << "tof: {amplitude_scale: 500, amplitude_sigma: 2}\n";
+  const Scenario scenario = loadScenario(path);
+  EXPECT_DOUBLE_EQ(scenario.scene.front().albedo, 0.3);
+  EXPECT_DOUBLE_EQ(scenario.tof.amplitude_scale, 500.0);
+  EXPECT_DOUBLE_EQ(scenario.tof.amplitude_sigma, 2.0);
+  std::string negative = with_albedo;
+  negative.replace(negative.find("albedo: 0.3"), 11, "albedo: -1");
+  EXPECT_NE(errorOf(negative).find("scene[0]/albedo"), std::string::npos) << errorOf(negative);
+  const std::string bad_scale = std::string(kMinimal) + "tof: {amplitude_scale: 0}\n";
+  EXPECT_NE(errorOf(bad_scale).find("amplitude_scale"), std::string::npos) << errorOf(bad_scale);
 }
 
 TEST(ScenarioTest, ErrorsNameTheFileAndKey) {

@@ -20,11 +20,17 @@ struct RigBagTopics {
   std::string depth;        ///< sensor_msgs/Image
   std::string camera_info;  ///< sensor_msgs/CameraInfo
   std::string imu;          ///< sensor_msgs/Imu; empty = the bag has none
+  /// The gray (amplitude) image, a mono8/mono16 sensor_msgs/Image. Requested: empty = the
+  /// only such topic besides the depth if there is exactly one, kNone = none. Detected:
+  /// empty = none.
+  std::string intensity;
+  static constexpr const char* kNone = "none";
 };
 
 class RigBag {
  public:
-  /// Empty topic names are filled with the only topic of that type in the bag. Throws
+  /// Empty topic names are filled with the only topic of that type in the bag (for the
+  /// depth, gray mono8/mono16 Image topics are left out when others exist). Throws
   /// std::runtime_error when the bag cannot be read, a named topic is missing or has the
   /// wrong type, or the choice is ambiguous (the message lists the candidates).
   RigBag(const std::string& path, const RigBagTopics& requested);
@@ -46,6 +52,13 @@ class RigBag {
   void forEachDepthFrame(
       const std::function<void(const sensor_msgs::ImageConstPtr&,
                                const sensor_msgs::CameraInfoConstPtr&)>& on_frame) const;
+
+  /// As forEachDepthFrame, with the gray image of the same header stamp (topics().intensity;
+  /// null when there is none for the frame). Gray images are looked for up to 1 s of bag
+  /// time around their depth image, whichever was recorded first.
+  void forEachFrame(const std::function<void(const sensor_msgs::ImageConstPtr&,
+                                             const sensor_msgs::CameraInfoConstPtr&,
+                                             const sensor_msgs::ImageConstPtr&)>& on_frame) const;
 
  private:
   void detectTopics(const RigBagTopics& requested);

@@ -16,12 +16,19 @@ namespace vicc_tracking {
 /// Topic names of the real drivers.
 struct RigTopics {
   static constexpr const char* kDepth = "/pico_flexx/image_depth";
+  static constexpr const char* kGray = "/pico_flexx/image_mono16";  ///< amplitude, mono16
   static constexpr const char* kCameraInfo = "/pico_flexx/camera_info";
   static constexpr const char* kImu = "/imu/data_raw";
 };
 
 sensor_msgs::Image rigDepthMessage(const sim::RigSimulator& rig, int frame_index,
                                    const ros::Time& stamp);
+/// One frame's depth (32FC1) and amplitude (mono16) images, same header.
+struct RigImages {
+  sensor_msgs::Image depth;
+  sensor_msgs::Image gray;
+};
+RigImages rigImageMessages(const sim::RigSimulator& rig, int frame_index, const ros::Time& stamp);
 sensor_msgs::CameraInfo rigCameraInfo(const sim::RigSimulator& rig, const ros::Time& stamp);
 sensor_msgs::Imu rigImuMessage(const sim::RigSimulator& rig, int sample_index,
                                const ros::Time& stamp);

@@ -41,6 +41,16 @@ class RigSimulator {
   cv::Mat renderDepthNoiseFree(double t) const;
   /// depthTimes()[frame_index] with ToF noise, flying pixels and dropouts.
   cv::Mat renderDepth(int frame_index) const;
+
+  /// One frame of the sensor: the depth of renderDepth and the amplitude (gray) image the
+  /// pico flexx delivers with it, CV_16UC1 like its image_mono16, on the same (distorted)
+  /// pixels: Lambertian, amplitude_scale * albedo * cos(incidence) / range^2 plus Gaussian
+  /// noise (tof.amplitude_sigma), 0 wherever the depth is invalid.
+  struct Frame {
+    cv::Mat depth;
+    cv::Mat amplitude;
+  };
+  Frame renderFrame(int frame_index) const;
   /// imuTimes()[index] with bias and white noise; stamp = relative time.
   ImuSample imuSample(int index) const;
 
@@ -49,6 +59,10 @@ class RigSimulator {
   }
 
  private:
+  /// Noise-free depth; with `amplitude`, also the noise-free amplitude (counts, float).
+  cv::Mat1f renderClean(double t, cv::Mat1f* amplitude) const;
+  Frame renderNoisy(int frame_index, bool with_amplitude) const;
+
   Scenario scenario_;
   Scene scene_;
   Trajectory trajectory_;

@@ -22,6 +22,10 @@ struct TofNoiseConfig {
   double dropout_probability = 0.01;
   double min_range = 0.1;
   double max_range = 4.0;
+  /// Amplitude image (mono16 counts): a white (albedo 1) surface facing the camera at 1 m
+  /// returns amplitude_scale; Gaussian noise of amplitude_sigma counts.
+  double amplitude_scale = 1000.0;
+  double amplitude_sigma = 5.0;
   void validate() const;
 };
 

@@ -18,11 +18,20 @@ struct Primitive {
   /// Box: half extents; ellipsoid: radii; cylinder: (radius, radius, half height).
   Eigen::Vector3d half_size = Eigen::Vector3d::Constant(0.05);
   double yaw = 0.0;  ///< rotation about the map's z axis, radians
+  double albedo = 1.0;  ///< Lambertian reflectivity for the simulated amplitude image, >= 0
 };
 
 struct SurfacePoint {
   Eigen::Vector3d position;
   Eigen::Vector3d normal;
+};
+
+/// A ray's first intersection: ray parameter, the primitive hit and its outward unit normal
+/// there (map frame).
+struct RayHit {
+  double t = 0.0;
+  size_t primitive = 0;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
 };
 
 class Scene {
@@ -33,6 +42,9 @@ class Scene {
   /// direction need not be unit length).
   std::optional<double> raycast(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
                                 double min_t = 1e-6) const;
+  /// As raycast, with the primitive hit and the surface normal at the hit.
+  std::optional<RayHit> raycastHit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                                   double min_t = 1e-6) const;
 
   /// Points on the scene's outer surface, about `spacing` apart, with outward normals.
   /// Points inside another primitive (hidden faces) are left out.
