@@ -68,6 +68,25 @@ TEST(ReconstructToolTest, ParsesTheDocumentedOptions) {
   EXPECT_TRUE(options.imu_topic.empty());
 }
 
+TEST(ReconstructToolTest, IntensityTopicDefaultsToAutomaticAndNoneTurnsItOff) {
+  ReconstructOptions automatic;
+  ASSERT_TRUE(parse({"rec.bag"}, automatic));
+  EXPECT_TRUE(automatic.intensity_topic.empty());
+  ReconstructOptions named;
+  ASSERT_TRUE(parse({"rec.bag", "--intensity-topic", "/pico_flexx/image_mono8"}, named));
+  EXPECT_EQ(named.intensity_topic, "/pico_flexx/image_mono8");
+  ReconstructOptions off;
+  ASSERT_TRUE(parse({"rec.bag", "--intensity-topic", "none"}, off));
+  EXPECT_EQ(off.intensity_topic, "none");
+  ReconstructOptions tracking_only;
+  EXPECT_TRUE(parse({"rec.bag", "--no-fusion", "--intensity-topic", "none"}, tracking_only));
+  ReconstructOptions bad;
+  EXPECT_THROW(parse({"rec.bag", "--intensity-topic"}, bad), std::invalid_argument);
+  EXPECT_THROW(parse({"rec.bag", "--intensity-topic", ""}, bad), std::invalid_argument);
+  EXPECT_THROW(parse({"rec.bag", "--no-fusion", "--intensity-topic", "/gray"}, bad),
+               std::invalid_argument);
+}
+
 TEST(ReconstructToolTest, RejectsBadArgumentsWithAMessage) {
   ReconstructOptions options;
   EXPECT_THROW(parse({}, options), std::invalid_argument);

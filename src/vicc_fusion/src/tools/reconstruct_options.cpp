@@ -22,6 +22,7 @@ int parsePositiveInt(const std::string& option, const std::string& text) {
 
 void printReconstructUsage(std::ostream& out) {
   out << "usage: vicc_reconstruct BAG [--depth-topic T] [--info-topic T] [--imu-topic T]\n"
+         "                        [--intensity-topic T|none]\n"
          "                        [--init ekf|identity|constant_velocity|imu] [--levels 1|2|3]\n"
          "                        [--frame-step N] [--trajectory OUT.tum] [--cloud OUT.ply]\n"
          "                        [--mesh OUT.ply] [--report OUT.json] [--gt TRUTH.tum]\n"
@@ -30,6 +31,9 @@ void printReconstructUsage(std::ostream& out) {
          "Tracks the depth camera through a depth + IMU recording (thesis 5.4) and fuses the\n"
          "frames into a surfel model it tracks against (frame-to-model, thesis 2.2.2, 5.3).\n"
          "  topics       default to the only Image / CameraInfo / Imu topic in the bag\n"
+         "  --intensity-topic  gray (amplitude) image fused as the surfels' intensity, matched\n"
+         "               to the depth by header stamp; default: the only mono8/mono16 Image\n"
+         "               topic besides the depth if there is exactly one; none: no intensity\n"
          "  --init       ICP initial guess: ekf (default, the thesis), identity (KinectFusion),\n"
          "               constant_velocity, imu (plain IMU integration); overrides --config\n"
          "  --levels     image pyramid levels for ICP (default 3); overrides --config\n"
@@ -72,6 +76,11 @@ bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptio
       options.info_topic = value();
     } else if (arg == "--imu-topic") {
       options.imu_topic = value();
+    } else if (arg == "--intensity-topic") {
+      options.intensity_topic = value();
+      if (options.intensity_topic.empty()) {
+        throw std::invalid_argument("--intensity-topic needs a topic or 'none'");
+      }
     } else if (arg == "--init") {
       init = vicc_tracking::initStrategyFromString(value());
     } else if (arg == "--levels") {
@@ -120,6 +129,9 @@ bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptio
                           !options.truth_surface_path.empty())) {
     throw std::invalid_argument(
         "--cloud, --mesh and --truth-surface need the model: drop --no-fusion");
+  }
+  if (!options.fusion && !options.intensity_topic.empty() && options.intensity_topic != "none") {
+    throw std::invalid_argument("--intensity-topic needs the model: drop --no-fusion");
   }
   if (!options.truth_surface_path.empty() && options.ground_truth_path.empty()) {
     throw std::invalid_argument(

@@ -13,6 +13,9 @@ struct ReconstructOptions {
   std::string depth_topic;  ///< empty: the only sensor_msgs/Image topic
   std::string info_topic;
   std::string imu_topic;
+  /// The gray (amplitude) image fused as the surfels' intensity. Empty: the only mono8/mono16
+  /// Image topic besides the depth, if there is exactly one; "none": no intensity.
+  std::string intensity_topic;
   /// The tracker's parameters: the defaults, or --config FILE.yaml (the tracker node's
   /// layout, config/tracker.yaml). --init and --levels override the file.
   std::string config_path;

@@ -38,6 +38,12 @@ nlohmann::json makeReport(const ReconstructOptions& options, const ReconstructRu
   report["bag"] = options.bag_path;
   report["topics"] = {
       {"depth", run.depth_topic}, {"camera_info", run.info_topic}, {"imu", run.imu_topic}};
+  report["intensity"] = {
+      {"topic",
+       run.intensity_topic.empty() ? nlohmann::json(nullptr) : nlohmann::json(run.intensity_topic)},
+      {"frames_with_intensity", run.frames_with_intensity},
+      {"frames_without_intensity", run.frames_without_intensity},
+      {"stable_surfels_with_intensity", run.stable_with_intensity}};
   report["settings"] = {{"init", vicc_tracking::toString(options.init)},
                         {"levels", options.levels},
                         {"frame_step", options.frame_step}};

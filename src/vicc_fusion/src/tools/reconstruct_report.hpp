@@ -15,6 +15,11 @@ namespace vicc_fusion {
 
 struct ReconstructRun {
   std::string depth_topic, info_topic, imu_topic;
+  std::string intensity_topic;       ///< empty: none
+  int frames_with_intensity = 0;     ///< fused with their gray image
+  int frames_without_intensity = 0;  ///< fused without (no gray image of their stamp, or bad)
+  /// Share of the stable surfels that carry an intensity (fusion ran).
+  double stable_with_intensity = 0.0;
   size_t depth_frames_in_bag = 0;
   size_t depth_frames_skipped = 0;  ///< by --frame-step
   double wall_time_s = 0.0;

@@ -1,5 +1,6 @@
 // vicc_reconstruct: runs the tracking pipeline over a depth + IMU recording. See --help.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -29,7 +30,10 @@ double secondsSince(Clock::time_point start) {
 class Reconstruction {
  public:
   Reconstruction(const vicc_fusion::ReconstructOptions& options, const vicc_tracking::RigBag& bag)
-      : options_(options), bag_(bag), config_(options.tracker) {
+      : options_(options),
+        bag_(bag),
+        config_(options.tracker),
+        gray_preprocessor_(options.tracker.preprocessing) {
     const bool has_imu = !bag.imuSamples().empty();
     if (vicc_tracking::needsImu(options.init) && !has_imu) {
       throw std::runtime_error("--init " + vicc_tracking::toString(options.init) +
@@ -55,9 +59,9 @@ class Reconstruction {
 
   void run() {
     start_ = Clock::now();
-    bag_.forEachDepthFrame(
-        [this](const sensor_msgs::ImageConstPtr& image,
-               const sensor_msgs::CameraInfoConstPtr& info) { onFrame(image, info); });
+    bag_.forEachFrame(
+        [this](const sensor_msgs::ImageConstPtr& image, const sensor_msgs::CameraInfoConstPtr& info,
+               const sensor_msgs::ImageConstPtr& gray) { onFrame(image, info, gray); });
     run_.wall_time_s = secondsSince(start_);
     if (!options_.quiet) printProgress(true);
   }
@@ -86,6 +90,18 @@ class Reconstruction {
       summary.model_prediction_ms = vicc_tracking::summarize(model_prediction_ms_);
       summary.pipeline_ms = vicc_tracking::summarize(pipeline_ms_);
       const vicc_fusion::SurfelVector stable = fusion.stableSurfels();
+      size_t with_intensity = 0;
+      for (const vicc_fusion::Surfel& surfel : stable)
+        with_intensity += !std::isnan(surfel.intensity);
+      run_.stable_with_intensity =
+          stable.empty() ? 0.0 : static_cast<double>(with_intensity) / stable.size();
+      if (!bag_.topics().intensity.empty()) {
+        std::fprintf(stderr,
+                     "vicc_reconstruct: intensity from %s: %d frames with, %d without; %.1f %% of "
+                     "the stable surfels have one\n",
+                     bag_.topics().intensity.c_str(), run_.frames_with_intensity,
+                     run_.frames_without_intensity, run_.stable_with_intensity * 100);
+      }
       if (!options_.truth_surface_path.empty() && run_.ground_truth_error) {
         run_.accuracy = vicc_fusion::evaluateModel(
             stable, vicc_fusion::loadTruthSurface(options_.truth_surface_path),
@@ -118,6 +134,7 @@ class Reconstruction {
     run_.depth_topic = bag_.topics().depth;
     run_.info_topic = bag_.topics().camera_info;
     run_.imu_topic = bag_.topics().imu;
+    run_.intensity_topic = bag_.topics().intensity;
     run_.depth_frames_in_bag = bag_.depthFrameCount();
     const nlohmann::json report = vicc_fusion::makeReport(options_, run_, statistics_);
     if (!options_.report_path.empty()) {
@@ -150,8 +167,8 @@ class Reconstruction {
     }
   }
 
-  void onFrame(const sensor_msgs::ImageConstPtr& image,
-               const sensor_msgs::CameraInfoConstPtr& info) {
+  void onFrame(const sensor_msgs::ImageConstPtr& image, const sensor_msgs::CameraInfoConstPtr& info,
+               const sensor_msgs::ImageConstPtr& gray) {
     const size_t index = depth_index_++;
     const double stamp = image->header.stamp.toSec();
     feedImuUpTo(stamp);
@@ -171,6 +188,7 @@ class Reconstruction {
         if (changed) {
           const vicc_tracking::CameraModel camera = vicc_tracking::cameraModelFromInfo(*info);
           tracker_->setCamera(camera);
+          gray_preprocessor_.setCamera(camera);
         }
         last_info_ = info;
       } catch (const std::exception& error) {
@@ -195,13 +213,25 @@ class Reconstruction {
     }
     if (report.aligned_to_model && run_.fusion) ++run_.fusion->frames_aligned_to_model;
     if (report.model_fallback && run_.fusion) ++run_.fusion->frames_model_fallback;
-    if (model_) fuse(report);
+    if (model_) fuse(report, gray);
     if (!options_.quiet && secondsSince(last_progress_) > 1.0) printProgress(false);
   }
 
-  void fuse(const vicc_tracking::FrameReport& report) {
-    const vicc_fusion::FrameToModelStep step = model_->afterFrame(*tracker_, report);
+  void fuse(const vicc_tracking::FrameReport& report, const sensor_msgs::ImageConstPtr& gray) {
+    cv::Mat1f intensity;
+    if (gray && !bag_.topics().intensity.empty()) {
+      try {
+        intensity = gray_preprocessor_.undistortIntensity(vicc_tracking::intensityImageView(*gray));
+      } catch (const std::exception& error) {
+        warn(std::string("gray image not used: ") + error.what());
+      }
+    }
+    const vicc_fusion::FrameToModelStep step =
+        model_->afterFrame(*tracker_, report, intensity.empty() ? nullptr : &intensity);
     if (!step.fused) return;
+    if (!bag_.topics().intensity.empty()) {
+      ++(intensity.empty() ? run_.frames_without_intensity : run_.frames_with_intensity);
+    }
     ReconstructRunFusion& summary = *run_.fusion;
     ++summary.frames_fused;
     summary.surfels_refused += step.fusion.refused;
@@ -233,6 +263,8 @@ class Reconstruction {
   const vicc_fusion::ReconstructOptions& options_;
   const vicc_tracking::RigBag& bag_;
   vicc_tracking::TrackerConfig config_;
+  /// The tracker's preprocessing for the gray image: the same undistorted grid as the depth.
+  vicc_tracking::DepthPreprocessor gray_preprocessor_;
   std::unique_ptr<vicc_tracking::Tracker> tracker_;
   std::unique_ptr<vicc_fusion::FrameToModel> model_;
   std::vector<double> fusion_ms_, model_prediction_ms_, pipeline_ms_;
@@ -260,9 +292,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const vicc_tracking::RigBag bag(options.bag_path,
-                                    {options.depth_topic, options.info_topic, options.imu_topic,
-                                     vicc_tracking::RigBagTopics::kNone});
+    const vicc_tracking::RigBag bag(options.bag_path, {options.depth_topic, options.info_topic,
+                                                       options.imu_topic, options.intensity_topic});
     std::fprintf(stderr, "vicc_reconstruct: %s: %zu depth frames on %s, %zu IMU readings on %s\n",
                  options.bag_path.c_str(), bag.depthFrameCount(), bag.topics().depth.c_str(),
                  bag.imuSamples().size(),
