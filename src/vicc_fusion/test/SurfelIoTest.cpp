@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <cstdio>
 #include <string>
 
@@ -31,6 +33,28 @@ TEST(SurfelIoTest, PlyRoundTripKeepsGeometryRadiusAndConfidence) {
     ASSERT_FLOAT_EQ(loaded[i].confidence, original[i].confidence);
   }
   std::remove(path.c_str());
+}
+
+TEST(SurfelIoTest, GrayIsTheIntensityStretchedToTheBrightSurfels) {
+  // A ToF amplitude fills a small part of its range: the PLY's gray spans 0..255 anyway, in
+  // proportion; surfels without intensity are white.
+  SurfelVector surfels(200);
+  for (size_t i = 0; i < surfels.size(); ++i) {
+    surfels[i].position = Eigen::Vector3f(0.001f * i, 0.f, 0.5f);
+    surfels[i].radius = 0.001f;
+    surfels[i].confidence = 5.f;
+    surfels[i].intensity = 0.0001f * (i % 100);  // 0 .. 0.0099
+  }
+  surfels.back().intensity = 0.5f;  // one highlight does not set the scale
+  surfels.front().intensity = std::numeric_limits<float>::quiet_NaN();
+  const auto cloud = toPointCloud(surfels);
+  EXPECT_EQ(cloud[0].r, 255);            // no intensity: white
+  EXPECT_EQ(cloud[1].r, 3);              // 0.0001 / 0.0099 * 255
+  EXPECT_EQ(cloud[99].r, 255);           // the bright ones
+  EXPECT_EQ(cloud[150].r, cloud[50].r);  // same intensity, same gray
+  EXPECT_NEAR(cloud[50].r, 0.0050 / 0.0099 * 255, 1.0);
+  EXPECT_EQ(cloud[199].r, 255);  // the highlight saturates
+  EXPECT_EQ(cloud[50].g, cloud[50].r);
 }
 
 TEST(SurfelIoTest, ClearErrorsForEmptyModelsAndMissingFiles) {

@@ -1,7 +1,9 @@
 #include "vicc_fusion/surfel_io.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include <pcl/conversions.h>
 #include <pcl/io/ply_io.h>
@@ -10,7 +12,26 @@
 
 namespace vicc_fusion {
 
+namespace {
+
+/// The 99th percentile of the surfels' intensities (0 if none has one): the PLY's gray is
+/// stretched to it, since a ToF amplitude uses a small part of its range (viewers would show
+/// a black model) and a few specular highlights should not set the scale.
+float brightIntensity(const SurfelVector& surfels) {
+  std::vector<float> values;
+  for (const Surfel& s : surfels) {
+    if (s.hasIntensity()) values.push_back(s.intensity);
+  }
+  if (values.empty()) return 0.f;
+  const auto bright = values.begin() + static_cast<std::ptrdiff_t>(values.size() * 99 / 100);
+  std::nth_element(values.begin(), bright, values.end());
+  return *bright;
+}
+
+}  // namespace
+
 pcl::PointCloud<pcl::PointSurfel> toPointCloud(const SurfelVector& surfels) {
+  const float bright = brightIntensity(surfels);
   pcl::PointCloud<pcl::PointSurfel> cloud;
   cloud.reserve(surfels.size());
   for (const Surfel& s : surfels) {
@@ -21,7 +42,8 @@ pcl::PointCloud<pcl::PointSurfel> toPointCloud(const SurfelVector& surfels) {
     point.confidence = s.confidence;
     point.curvature = 0.f;
     // Gray from the intensity when there is one (viewers show it), white otherwise.
-    const float gray = s.hasIntensity() ? std::clamp(s.intensity, 0.f, 1.f) : 1.f;
+    const float gray =
+        s.hasIntensity() ? (bright > 0.f ? std::clamp(s.intensity / bright, 0.f, 1.f) : 0.f) : 1.f;
     point.r = point.g = point.b = static_cast<std::uint8_t>(std::lround(gray * 255.f));
     point.a = 255;
     cloud.push_back(point);

@@ -27,6 +27,7 @@ FusionRosSettings readFusionRosSettings(const ros::NodeHandle& private_nh) {
   readOptionalParam(private_nh, "map_frame", settings.map_frame);
   readOptionalParam(private_nh, "publish_rate", settings.publish_rate);
   readOptionalParam(private_nh, "pose_queue_size", settings.pose_queue_size);
+  readOptionalParam(private_nh, "use_intensity", settings.use_intensity);
   settings.validate();
   return settings;
 }
@@ -55,6 +56,17 @@ FusionRos::FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : settings_(readFusionRosSettings(private_nh)), model_(readFrameToModelConfig(private_nh)) {
   model_pub_ = private_nh.advertise<sensor_msgs::PointCloud2>("model", 1, true);
   save_service_ = private_nh.advertiseService("save_model", &FusionRos::onSaveModel, this);
+  vicc_tracking::PreprocessingConfig preprocessing =
+      vicc_tracking::readTrackerConfig(private_nh).preprocessing;
+  preprocessing.pyramid_levels = 1;
+  if (!settings_.track || settings_.use_intensity) {
+    preprocessor_ = std::make_unique<vicc_tracking::DepthPreprocessor>(preprocessing);
+    info_sub_ = nh.subscribe("depth/camera_info", 2, &FusionRos::onCameraInfo, this);
+  }
+  if (settings_.use_intensity) {
+    intensity_sub_ = nh.subscribe("intensity/image", 5, &FusionRos::onIntensity, this);
+    ROS_INFO("fusion: surfel intensity from %s", intensity_sub_.getTopic().c_str());
+  }
   if (settings_.track) {
     tracker_ = std::make_unique<vicc_tracking::TrackerRos>(nh, private_nh);
     frame_id_ = tracker_->settings().map_frame;
@@ -69,13 +81,8 @@ FusionRos::FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     return;
   }
   frame_id_ = settings_.map_frame;
-  vicc_tracking::PreprocessingConfig preprocessing =
-      vicc_tracking::readTrackerConfig(private_nh).preprocessing;
-  preprocessing.pyramid_levels = 1;
-  preprocessor_ = std::make_unique<vicc_tracking::DepthPreprocessor>(preprocessing);
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
-  info_sub_ = nh.subscribe("depth/camera_info", 2, &FusionRos::onCameraInfo, this);
   depth_sub_ = std::make_unique<message_filters::Subscriber<sensor_msgs::Image>>(
       nh, "depth/image", settings_.pose_queue_size);
   depth_pose_filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::Image>>(
@@ -97,7 +104,9 @@ void FusionRos::onTrackedFrame(vicc_tracking::Tracker& tracker,
                                const sensor_msgs::Image& depth,
                                const Eigen::Isometry3d& map_alignment) {
   try {
-    const FrameToModelStep step = model_.afterFrame(tracker, report);
+    const std::optional<cv::Mat1f> intensity = intensityFor(depth.header.stamp);
+    const FrameToModelStep step =
+        model_.afterFrame(tracker, report, intensity ? &*intensity : nullptr);
     model_to_frame_ = map_alignment;
     if (step.fused) afterFusion(step.fusion, depth.header.stamp);
   } catch (const std::exception& error) {
@@ -137,10 +146,34 @@ void FusionRos::onDepth(const sensor_msgs::ImageConstPtr& depth) {
   try {
     const vicc_tracking::DepthPyramid frame =
         preprocessor_->process(vicc_tracking::depthImageView(*depth));
-    afterFusion(model_.fuse(frame.front(), camera_pose).fusion, depth->header.stamp);
+    const std::optional<cv::Mat1f> intensity = intensityFor(depth->header.stamp);
+    afterFusion(model_.fuse(frame.front(), camera_pose, intensity ? &*intensity : nullptr).fusion,
+                depth->header.stamp);
   } catch (const std::exception& error) {
     ROS_WARN_THROTTLE(kWarnPeriod, "fusion: depth image dropped: %s", error.what());
   }
+}
+
+void FusionRos::onIntensity(const sensor_msgs::ImageConstPtr& gray) {
+  constexpr size_t kKept = 10;  // the depth of the same stamp may be a few frames behind
+  recent_gray_.push_back(gray);
+  while (recent_gray_.size() > kKept) recent_gray_.pop_front();
+}
+
+std::optional<cv::Mat1f> FusionRos::intensityFor(const ros::Time& stamp) {
+  if (!settings_.use_intensity) return std::nullopt;
+  for (const sensor_msgs::ImageConstPtr& gray : recent_gray_) {
+    if (gray->header.stamp != stamp) continue;
+    try {
+      if (!camera_) throw std::runtime_error("no valid camera_info yet");
+      return preprocessor_->undistortIntensity(vicc_tracking::intensityImageView(*gray));
+    } catch (const std::exception& error) {
+      ROS_WARN_THROTTLE(kWarnPeriod, "fusion: gray image at %.3f not used: %s", stamp.toSec(),
+                        error.what());
+      return std::nullopt;
+    }
+  }
+  return std::nullopt;
 }
 
 void FusionRos::afterFusion(const FusionFrameStats& stats, const ros::Time& stamp) {

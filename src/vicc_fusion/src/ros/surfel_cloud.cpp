@@ -12,11 +12,11 @@ sensor_msgs::PointCloud2 toPointCloud2(const SurfelVector& surfels,
   cloud.header.stamp = stamp;
   sensor_msgs::PointCloud2Modifier modifier(cloud);
   modifier.setPointCloud2Fields(
-      8, "x", 1, sensor_msgs::PointField::FLOAT32, "y", 1, sensor_msgs::PointField::FLOAT32, "z", 1,
+      9, "x", 1, sensor_msgs::PointField::FLOAT32, "y", 1, sensor_msgs::PointField::FLOAT32, "z", 1,
       sensor_msgs::PointField::FLOAT32, "normal_x", 1, sensor_msgs::PointField::FLOAT32, "normal_y",
       1, sensor_msgs::PointField::FLOAT32, "normal_z", 1, sensor_msgs::PointField::FLOAT32,
       "radius", 1, sensor_msgs::PointField::FLOAT32, "confidence", 1,
-      sensor_msgs::PointField::FLOAT32);
+      sensor_msgs::PointField::FLOAT32, "intensity", 1, sensor_msgs::PointField::FLOAT32);
   modifier.resize(surfels.size());
   cloud.height = 1;
   cloud.width = static_cast<uint32_t>(surfels.size());
@@ -27,6 +27,7 @@ sensor_msgs::PointCloud2 toPointCloud2(const SurfelVector& surfels,
   sensor_msgs::PointCloud2Iterator<float> normal(cloud, "normal_x");
   sensor_msgs::PointCloud2Iterator<float> radius(cloud, "radius");
   sensor_msgs::PointCloud2Iterator<float> confidence(cloud, "confidence");
+  sensor_msgs::PointCloud2Iterator<float> intensity(cloud, "intensity");  // NaN: none
   for (const Surfel& surfel : surfels) {
     const Eigen::Vector3f p = pose * surfel.position;
     const Eigen::Vector3f n = pose.linear() * surfel.normal;
@@ -34,7 +35,8 @@ sensor_msgs::PointCloud2 toPointCloud2(const SurfelVector& surfels,
     normal[0] = n.x(), normal[1] = n.y(), normal[2] = n.z();
     *radius = surfel.radius;
     *confidence = surfel.confidence;
-    ++position, ++normal, ++radius, ++confidence;
+    *intensity = surfel.intensity;
+    ++position, ++normal, ++radius, ++confidence, ++intensity;
   }
   return cloud;
 }

@@ -2,6 +2,7 @@
 // simulator's true surface, tracks the ground truth, and saves the model on request.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -26,6 +27,7 @@ namespace {
 std::string g_surface_path;
 // The tracker's topics: the fusion node's own (track: true) or an external tracker node's.
 std::string g_tracker_namespace = "/fusion";
+bool g_expect_intensity = false;
 
 class FusionNodeTest : public ::testing::Test {
  protected:
@@ -110,6 +112,22 @@ TEST_F(FusionNodeTest, ModelLiesOnTheTrueSurface) {
   EXPECT_GT(accuracy.completeness, 0.6);
   EXPECT_LT(accuracy.surfels_outside, surfels.size() / 10);
 
+  // Gray values: with use_intensity most stable surfels carry the simulated amplitude (a
+  // fraction in [0, 1] of the mono16 range), otherwise none does.
+  size_t with_intensity = 0;
+  for (sensor_msgs::PointCloud2ConstIterator<float> gray(last_cloud_, "intensity");
+       gray != gray.end(); ++gray) {
+    if (std::isnan(*gray)) continue;
+    ++with_intensity;
+    EXPECT_GE(*gray, 0.f);
+    EXPECT_LE(*gray, 1.f);
+  }
+  if (g_expect_intensity) {
+    EXPECT_GT(with_intensity, surfels.size() * 9 / 10);
+  } else {
+    EXPECT_EQ(with_intensity, 0u);
+  }
+
   // ~save_model writes the model ~model showed (the fusion may still have fused a last queued
   // frame since: merges and removals change the count a little).
   vicc_msgs::SaveModel save;
@@ -137,5 +155,6 @@ int main(int argc, char** argv) {
   }
   g_surface_path = argv[1];
   ros::NodeHandle("~").param<std::string>("tracker_namespace", g_tracker_namespace, "/fusion");
+  ros::NodeHandle("~").param<bool>("expect_intensity", g_expect_intensity, false);
   return RUN_ALL_TESTS();
 }

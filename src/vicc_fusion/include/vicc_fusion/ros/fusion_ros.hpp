@@ -9,6 +9,7 @@
 // Both publish the stable model on ~model (PointCloud2, throttled, only with subscribers) and
 // serve ~save_model (binary PLY).
 
+#include <deque>
 #include <memory>
 #include <optional>
 
@@ -33,10 +34,14 @@ struct FusionRosSettings {
   /// track: false: depth frames held until the external tracker's pose for their stamp is on
   /// tf (tf2_ros::MessageFilter, never blocking the callbacks); the oldest go first.
   int pose_queue_size = 10;
+  /// Fuse the gray image of `intensity/image` (mono8/mono16/32FC1, the sensor's grid) as surfel
+  /// intensity: each depth frame takes the gray image with its exact stamp, if it arrived.
+  bool use_intensity = false;
   void validate() const;
 };
 
-/// Private parameters: track, map_frame, publish_rate, pose_queue_size, frame_to_model,
+/// Private parameters: track, map_frame, publish_rate, pose_queue_size, use_intensity,
+/// frame_to_model,
 /// min_prediction_coverage and fusion/* (the SurfelFusionConfig fields).
 FusionRosSettings readFusionRosSettings(const ros::NodeHandle& private_nh);
 FrameToModelConfig readFrameToModelConfig(const ros::NodeHandle& private_nh);
@@ -51,6 +56,10 @@ class FusionRos {
                       const sensor_msgs::Image& depth, const Eigen::Isometry3d& map_alignment);
   void onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info);
   void onDepth(const sensor_msgs::ImageConstPtr& depth);
+  void onIntensity(const sensor_msgs::ImageConstPtr& gray);
+  /// The gray image with the depth's stamp on the depth's undistorted grid; nullopt if none
+  /// arrived (the frame is then fused without intensity) or it is unusable (warning).
+  std::optional<cv::Mat1f> intensityFor(const ros::Time& stamp);
   void afterFusion(const FusionFrameStats& stats, const ros::Time& stamp);
   bool onSaveModel(vicc_msgs::SaveModel::Request& request,
                    vicc_msgs::SaveModel::Response& response);
@@ -64,6 +73,10 @@ class FusionRos {
 
   // track: true
   std::unique_ptr<vicc_tracking::TrackerRos> tracker_;
+  // use_intensity: recent gray images (a few frames), and the preprocessor that undistorts
+  // them (track: false uses it for the depth too)
+  std::deque<sensor_msgs::ImageConstPtr> recent_gray_;
+  ros::Subscriber intensity_sub_;
   // track: false
   std::unique_ptr<vicc_tracking::DepthPreprocessor> preprocessor_;
   std::optional<vicc_tracking::CameraModel> camera_;
