@@ -12,15 +12,16 @@
 namespace vicc_tracking {
 
 struct PreprocessingConfig {
-  int pyramid_levels = 3;              ///< 1..3, level 0 = full resolution
-  double min_depth = 0.1;              ///< m; closer readings are invalid
-  double max_depth = 4.0;              ///< m
+  int pyramid_levels = 3;  ///< 1..3, level 0 = full resolution
+  double min_depth = 0.1;  ///< m; closer readings are invalid
+  double max_depth = 4.0;  ///< m
   bool bilateral_filter = true;
-  int bilateral_diameter = 5;          ///< px
-  double bilateral_sigma_depth = 0.03; ///< m
-  double bilateral_sigma_space = 2.0;  ///< px
-  double pyramid_depth_threshold = 0.03;  ///< m; depths further from the block's nearest are not averaged
-  double normal_depth_jump = 0.05;     ///< m; neighbours further apart give no normal (depth edge)
+  int bilateral_diameter = 5;           ///< px
+  double bilateral_sigma_depth = 0.03;  ///< m
+  double bilateral_sigma_space = 2.0;   ///< px
+  double pyramid_depth_threshold =
+      0.03;                         ///< m; depths further from the block's nearest are not averaged
+  double normal_depth_jump = 0.05;  ///< m; neighbours further apart give no normal (depth edge)
   void validate() const;
 };
 
@@ -87,6 +88,10 @@ class DepthPreprocessor {
   cv::Mat1f undistortIntensity(const cv::Mat& sensor_image) const;
 
  private:
+  /// Throws std::logic_error without a camera, std::invalid_argument naming `what` when the
+  /// image's size is not the camera's.
+  void requireCameraSize(const cv::Mat& image, const char* what) const;
+
   PreprocessingConfig config_;
   CameraModel camera_;
   bool has_camera_ = false;

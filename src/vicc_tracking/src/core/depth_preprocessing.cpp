@@ -303,14 +303,18 @@ cv::Mat1f DepthPreprocessor::undistort(const cv::Mat1f& metric_depth) const {
   return undistorted;
 }
 
-cv::Mat1f DepthPreprocessor::undistortIntensity(const cv::Mat& sensor_image) const {
+void DepthPreprocessor::requireCameraSize(const cv::Mat& image, const char* what) const {
   if (!has_camera_) throw std::logic_error("DepthPreprocessor: no camera set");
-  if (sensor_image.cols != camera_.width || sensor_image.rows != camera_.height) {
-    throw std::invalid_argument("intensity image is " + std::to_string(sensor_image.cols) + "x" +
-                                std::to_string(sensor_image.rows) + " but camera_info says " +
+  if (image.cols != camera_.width || image.rows != camera_.height) {
+    throw std::invalid_argument(std::string(what) + " image is " + std::to_string(image.cols) +
+                                "x" + std::to_string(image.rows) + " but camera_info says " +
                                 std::to_string(camera_.width) + "x" +
                                 std::to_string(camera_.height));
   }
+}
+
+cv::Mat1f DepthPreprocessor::undistortIntensity(const cv::Mat& sensor_image) const {
+  requireCameraSize(sensor_image, "intensity");
   cv::Mat1f sensor;
   if (sensor_image.type() == CV_8UC1) {
     sensor_image.convertTo(sensor, CV_32F, 1.0 / 255.0);
@@ -341,13 +345,7 @@ cv::Mat1f DepthPreprocessor::undistortIntensity(const cv::Mat& sensor_image) con
 }
 
 DepthPyramid DepthPreprocessor::process(const cv::Mat& raw) const {
-  if (!has_camera_) throw std::logic_error("DepthPreprocessor: no camera set");
-  if (raw.cols != camera_.width || raw.rows != camera_.height) {
-    throw std::invalid_argument("depth image is " + std::to_string(raw.cols) + "x" +
-                                std::to_string(raw.rows) + " but camera_info says " +
-                                std::to_string(camera_.width) + "x" +
-                                std::to_string(camera_.height));
-  }
+  requireCameraSize(raw, "depth");
   cv::Mat1f depth = toMetricDepth(raw);  // a new image: the caller's stays untouched
   const float min_depth = static_cast<float>(config_.min_depth);
   const float max_depth = static_cast<float>(config_.max_depth);

@@ -45,71 +45,54 @@ sensor_msgs::CameraInfo cameraInfoFromModel(const CameraModel& camera) {
   return info;
 }
 
-cv::Mat depthImageView(const sensor_msgs::Image& image) {
-  namespace enc = sensor_msgs::image_encodings;
-  int type = -1;
-  size_t element_size = 0;
-  if (image.encoding == enc::TYPE_32FC1) {
-    type = CV_32FC1;
-    element_size = 4;
-  } else if (image.encoding == enc::TYPE_16UC1 || image.encoding == enc::MONO16) {
-    type = CV_16UC1;
-    element_size = 2;
-  } else {
-    throw std::invalid_argument("depth image has encoding '" + image.encoding +
-                                "'; expected 32FC1 (metres) or 16UC1 (millimetres)");
-  }
+namespace {
+
+/// A cv::Mat over the message's data after checking size, step and byte order; `what` names
+/// the image in the error messages.
+cv::Mat checkedView(const sensor_msgs::Image& image, int type, size_t element_size,
+                    const std::string& what) {
   if (image.width == 0 || image.height == 0) {
-    throw std::invalid_argument("depth image is empty (0 width or height)");
+    throw std::invalid_argument(what + " image is empty (0 width or height)");
   }
   if (image.step < image.width * element_size ||
       image.data.size() < static_cast<size_t>(image.step) * image.height) {
     std::ostringstream message;
-    message << "depth image " << image.width << "x" << image.height << " has step " << image.step
+    message << what << " image " << image.width << "x" << image.height << " has step " << image.step
             << " and " << image.data.size() << " bytes of data: too small";
     throw std::invalid_argument(message.str());
   }
   const bool host_big_endian = false;  // x86/ARM Linux hosts are little endian
-  if (image.is_bigendian != host_big_endian) {
-    throw std::invalid_argument("depth image is big-endian; only little-endian is supported");
+  if (element_size > 1 && static_cast<bool>(image.is_bigendian) != host_big_endian) {
+    throw std::invalid_argument(what + " image is big-endian; only little-endian is supported");
   }
   // The Mat is read-only in practice; OpenCV's API needs a non-const pointer.
   return cv::Mat(static_cast<int>(image.height), static_cast<int>(image.width), type,
                  const_cast<uint8_t*>(image.data.data()), image.step);
 }
 
+}  // namespace
+
+cv::Mat depthImageView(const sensor_msgs::Image& image) {
+  namespace enc = sensor_msgs::image_encodings;
+  if (image.encoding == enc::TYPE_32FC1) return checkedView(image, CV_32FC1, 4, "depth");
+  if (image.encoding == enc::TYPE_16UC1 || image.encoding == enc::MONO16) {
+    return checkedView(image, CV_16UC1, 2, "depth");
+  }
+  throw std::invalid_argument("depth image has encoding '" + image.encoding +
+                              "'; expected 32FC1 (metres) or 16UC1 (millimetres)");
+}
+
 cv::Mat intensityImageView(const sensor_msgs::Image& image) {
   namespace enc = sensor_msgs::image_encodings;
-  int type = -1;
-  size_t element_size = 0;
   if (image.encoding == enc::MONO8 || image.encoding == enc::TYPE_8UC1) {
-    type = CV_8UC1;
-    element_size = 1;
-  } else if (image.encoding == enc::MONO16 || image.encoding == enc::TYPE_16UC1) {
-    type = CV_16UC1;
-    element_size = 2;
-  } else if (image.encoding == enc::TYPE_32FC1) {
-    type = CV_32FC1;
-    element_size = 4;
-  } else {
-    throw std::invalid_argument("gray image has encoding '" + image.encoding +
-                                "'; expected mono8, mono16 or 32FC1");
+    return checkedView(image, CV_8UC1, 1, "gray");
   }
-  if (image.width == 0 || image.height == 0) {
-    throw std::invalid_argument("gray image is empty (0 width or height)");
+  if (image.encoding == enc::MONO16 || image.encoding == enc::TYPE_16UC1) {
+    return checkedView(image, CV_16UC1, 2, "gray");
   }
-  if (image.step < image.width * element_size ||
-      image.data.size() < static_cast<size_t>(image.step) * image.height) {
-    std::ostringstream message;
-    message << "gray image " << image.width << "x" << image.height << " has step " << image.step
-            << " and " << image.data.size() << " bytes of data: too small";
-    throw std::invalid_argument(message.str());
-  }
-  if (image.is_bigendian && element_size > 1) {
-    throw std::invalid_argument("gray image is big-endian; only little-endian is supported");
-  }
-  return cv::Mat(static_cast<int>(image.height), static_cast<int>(image.width), type,
-                 const_cast<uint8_t*>(image.data.data()), image.step);
+  if (image.encoding == enc::TYPE_32FC1) return checkedView(image, CV_32FC1, 4, "gray");
+  throw std::invalid_argument("gray image has encoding '" + image.encoding +
+                              "'; expected mono8, mono16 or 32FC1");
 }
 
 bool isGrayEncoding(const std::string& encoding) {
