@@ -100,37 +100,35 @@ bool isGrayEncoding(const std::string& encoding) {
          encoding == sensor_msgs::image_encodings::MONO16;
 }
 
-sensor_msgs::Image mono16ImageMessage(const cv::Mat& gray) {
-  if (gray.type() != CV_16UC1) throw std::invalid_argument("mono16ImageMessage expects CV_16UC1");
+namespace {
+
+/// A little-endian Image message holding a copy of `mat` (rows packed).
+sensor_msgs::Image imageMessage(const cv::Mat& mat, const std::string& encoding) {
   sensor_msgs::Image image;
-  image.encoding = sensor_msgs::image_encodings::MONO16;
-  image.width = static_cast<uint32_t>(gray.cols);
-  image.height = static_cast<uint32_t>(gray.rows);
-  image.step = image.width * sizeof(uint16_t);
+  image.encoding = encoding;
+  image.width = static_cast<uint32_t>(mat.cols);
+  image.height = static_cast<uint32_t>(mat.rows);
+  image.step = static_cast<uint32_t>(image.width * mat.elemSize());
   image.is_bigendian = 0;
   image.data.resize(static_cast<size_t>(image.step) * image.height);
-  for (int row = 0; row < gray.rows; ++row) {
-    std::memcpy(&image.data[static_cast<size_t>(row) * image.step], gray.ptr(row), image.step);
+  for (int row = 0; row < mat.rows; ++row) {
+    std::memcpy(&image.data[static_cast<size_t>(row) * image.step], mat.ptr(row), image.step);
   }
   return image;
+}
+
+}  // namespace
+
+sensor_msgs::Image mono16ImageMessage(const cv::Mat& gray) {
+  if (gray.type() != CV_16UC1) throw std::invalid_argument("mono16ImageMessage expects CV_16UC1");
+  return imageMessage(gray, sensor_msgs::image_encodings::MONO16);
 }
 
 sensor_msgs::Image depthImageMessage(const cv::Mat& depth_metres) {
   if (depth_metres.type() != CV_32FC1) {
     throw std::invalid_argument("depthImageMessage expects a CV_32FC1 image");
   }
-  sensor_msgs::Image image;
-  image.encoding = sensor_msgs::image_encodings::TYPE_32FC1;
-  image.width = static_cast<uint32_t>(depth_metres.cols);
-  image.height = static_cast<uint32_t>(depth_metres.rows);
-  image.step = image.width * sizeof(float);
-  image.is_bigendian = 0;
-  image.data.resize(static_cast<size_t>(image.step) * image.height);
-  for (int row = 0; row < depth_metres.rows; ++row) {
-    std::memcpy(&image.data[static_cast<size_t>(row) * image.step], depth_metres.ptr(row),
-                image.step);
-  }
-  return image;
+  return imageMessage(depth_metres, sensor_msgs::image_encodings::TYPE_32FC1);
 }
 
 ImuSample imuSampleFromMessage(const sensor_msgs::Imu& imu) {
