@@ -6,15 +6,7 @@
 #   usage: bench/run_fusion_bench.sh [SCENARIO...]   (default: hen hen_duplo office hen_slow)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-export PATH=/usr/bin:/bin:$PATH
-set +u; source devel/setup.bash; set -u
-
-SCENARIOS=("$@")
-[ ${#SCENARIOS[@]} -eq 0 ] && SCENARIOS=(hen hen_duplo office hen_slow)
-INITS=(identity ekf constant_velocity imu ekf_imu_noise)
-OUT=bench/out
-source bench/init_args.sh
-mkdir -p "$OUT" bench/results
+source bench/common.sh "$@"
 
 make_bag() {  # scenario: bag, ground truth and true surface, regenerated when the YAML changes
   local scenario=$1 bag=$OUT/$1.bag

@@ -6,15 +6,7 @@
 #   usage: bench/run_tracking_bench.sh [SCENARIO...]   (default: hen hen_duplo office hen_slow)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-export PATH=/usr/bin:/bin:$PATH
-set +u; source devel/setup.bash; set -u
-
-SCENARIOS=("$@")
-[ ${#SCENARIOS[@]} -eq 0 ] && SCENARIOS=(hen hen_duplo office hen_slow)
-INITS=(identity ekf constant_velocity imu ekf_imu_noise)
-OUT=bench/out
-source bench/init_args.sh
-mkdir -p "$OUT" bench/results
+source bench/common.sh "$@"
 
 for scenario in "${SCENARIOS[@]}"; do
   bag=$OUT/$scenario.bag
