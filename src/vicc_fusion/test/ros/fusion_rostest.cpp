@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
 #include <sensor_msgs/PointCloud2.h>
@@ -131,7 +133,9 @@ TEST_F(FusionNodeTest, ModelLiesOnTheTrueSurface) {
   // ~save_model writes the model ~model showed (the fusion may still have fused a last queued
   // frame since: merges and removals change the count a little).
   vicc_msgs::SaveModel save;
-  save.request.path = ::testing::TempDir() + "/vicc_fusion_rostest_model.ply";
+  // One file per test process: make runs the fusion rostests in parallel.
+  save.request.path =
+      ::testing::TempDir() + "/vicc_fusion_rostest_model_" + std::to_string(getpid()) + ".ply";
   ASSERT_TRUE(ros::service::call("/fusion/save_model", save));
   EXPECT_TRUE(save.response.success) << save.response.message;
   EXPECT_NEAR(static_cast<double>(save.response.surfels), static_cast<double>(surfels.size()),
