@@ -43,7 +43,7 @@ class PatientStatusService {
   RecordStore& store();
 
   std::vector<PatientSummary> listPatients();
-  std::vector<std::int64_t> examinationDates(const std::string& patient_id);
+  std::vector<TimestampUs> examinationDates(const std::string& patient_id);
   /// The examination at or before `date` ("" = latest); ValidationError for a bad date.
   std::optional<Examination> examinationAt(const std::string& patient_id, const std::string& date);
   EncodedStatus encodedStatus(const std::string& patient_id, const std::string& date,

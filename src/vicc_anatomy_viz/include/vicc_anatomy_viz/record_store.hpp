@@ -16,9 +16,12 @@
 namespace vicc_anatomy_viz {
 
 struct StoreConfig {
-  std::string path;            ///< database file; parent directories are created
+  std::string path;            ///< database file; parent directories are created (0700)
   int busy_timeout_ms = 5000;  ///< how long to wait for another writer's lock
-  void validate() const;       ///< throws std::invalid_argument
+  /// Read commands open the file read-only: a missing file is an error (nothing is created),
+  /// and a database on a read-only medium or directory stays readable.
+  bool read_only = false;
+  void validate() const;  ///< throws std::invalid_argument
 };
 
 /// ~/.ros/vicc/patients.db (ROS_HOME is honoured).
@@ -26,7 +29,11 @@ std::string defaultDatabasePath();
 
 enum class WriteMode {
   kRejectExisting,  ///< an examination at an existing (patient, time) rejects the batch
-  kReplace,         ///< it replaces the stored one
+  /// It replaces the stored one, which is kept as a superseded version (history). Replacing
+  /// an examination that has findings by one without any is refused: that would silently
+  /// turn a recorded deficit into "normal".
+  kReplace,
+  kReplaceEvenWithEmpty,  ///< as kReplace, and an examination without findings may replace
 };
 
 class RecordStore {
@@ -39,13 +46,17 @@ class RecordStore {
 
   std::vector<PatientSummary> listPatients();
   /// Examination times of a patient, oldest first; StoreError kNotFound for an unknown id.
-  std::vector<std::int64_t> examinationTimes(const std::string& patient_id);
-  /// The latest examination at or before `upper_bound` (UTC seconds); nullopt if none.
+  std::vector<TimestampUs> examinationTimes(const std::string& patient_id);
+  /// The latest examination at or before `upper_bound`; nullopt if none.
   /// StoreError kNotFound for an unknown patient.
   std::optional<Examination> examinationAtOrBefore(const std::string& patient_id,
-                                                   std::int64_t upper_bound);
+                                                   TimestampUs upper_bound);
   /// All examinations of one patient (or of all patients when `patient_id` is empty).
   std::vector<Examination> examinations(const std::string& patient_id = "");
+
+  /// Superseded versions of a patient's examinations (or of everyone's when `patient_id` is
+  /// empty), by examination time, then oldest replacement first.
+  std::vector<SupersededExamination> history(const std::string& patient_id = "");
 
   /// Writes the batch in one transaction: all of it or nothing.
   void write(const ValidatedBatch& batch, WriteMode mode = WriteMode::kRejectExisting);
@@ -54,8 +65,15 @@ class RecordStore {
   std::vector<std::string> integrityCheck();
 
  private:
+  void openForWriting();
+  void openReadOnly();
   std::int64_t patientRowId(const std::string& patient_id, bool create);
   void loadFindings(Examination& examination, std::int64_t examination_row);
+  /// Moves the stored examination `row` into the history; refuses an empty replacement.
+  void supersede(std::int64_t row, const Examination& replacement, WriteMode mode, std::int64_t now,
+                 std::vector<std::string>& conflicts);
+  void insertExamination(std::int64_t patient_row, const Examination& examination,
+                         std::int64_t now);
 
   StoreConfig config_;
   std::unique_ptr<SqliteConnection> connection_;

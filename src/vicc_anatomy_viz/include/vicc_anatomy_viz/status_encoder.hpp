@@ -70,7 +70,10 @@ struct EncodedStatus {
   std::string view_id;
   std::string requested_date;
   bool has_examination = false;
-  std::int64_t examination_time = 0;
+  TimestampUs examination_time = 0;
+  ExaminationStatus examination_status = ExaminationStatus::kFinal;
+  bool partial = false;  ///< missing findings are unknown, not normal
+  std::string partial_reason;
   std::vector<EncodedStructure> structures;
   std::vector<Alternation> alternations;
   std::vector<LegendEntry> legend;

@@ -30,19 +30,18 @@ std::string listProperties(const Category& category) {
   return out.str();
 }
 
-/// A value of the wrong kind or outside the domain; "" when fine.
+/// A value of the wrong kind or outside the domain; "" when fine. Messages end up in logs:
+/// they name the property and the domain, never the recorded value.
 std::string domainProblem(const std::string& prop_type, const Domain& domain, const Value& value) {
   if (domain.type == DataType::kNumerical && !value.isNumber()) {
-    return "property '" + prop_type + "': '" + value.toString() + "' is not a number (domain " +
-           domain.describe() + ")";
+    return "property '" + prop_type + "': the value is not a number (domain " + domain.describe() +
+           ")";
   }
   if (domain.type != DataType::kNumerical && value.isNumber()) {
-    return "property '" + prop_type + "': " + value.toString() + " is not one of " +
-           domain.describe();
+    return "property '" + prop_type + "': the value is a number, not one of " + domain.describe();
   }
   if (!domain.contains(value)) {
-    return "property '" + prop_type + "': value " + value.toString() + " is outside the domain " +
-           domain.describe();
+    return "property '" + prop_type + "': the value is outside the domain " + domain.describe();
   }
   return "";
 }
@@ -113,9 +112,8 @@ std::vector<std::string> ExaminationValidator::findingProblems(const Finding& fi
       const auto given = finding.values.find(derived->prop_type);
       const Value expected = derived->source->derive.at(value.toString());
       if (given != finding.values.end() && given->second != expected) {
-        problems.push_back("property '" + derived->prop_type + "': '" + given->second.toString() +
-                           "' contradicts " + prop_type + " " + value.toString() +
-                           " (which gives '" + expected.toString() + "')");
+        problems.push_back("property '" + derived->prop_type + "' contradicts the recorded " +
+                           prop_type + " (from which it is derived)");
       }
     } else {
       problems.push_back("unknown property '" + prop_type + "' for category '" + category->id +
@@ -138,7 +136,7 @@ std::vector<std::string> ExaminationValidator::problems(const Examination& exami
   const std::string id_problem = patientIdProblem(examination.patient_id);
   const std::string exam_name = id_problem.empty()
                                     ? examination.describe()
-                                    : "examination " + formatTimestamp(examination.taken_at);
+                                    : "examination " + formatTimestamp(examination.taken_at_us);
   if (!id_problem.empty()) problems.push_back(exam_name + ": " + id_problem);
   std::set<std::tuple<std::string, std::string, Side>> seen;
   for (std::size_t i = 0; i < examination.findings.size(); ++i) {
@@ -155,12 +153,12 @@ std::vector<std::string> ExaminationValidator::problems(const Examination& exami
 
 ValidatedBatch ExaminationValidator::validate(std::vector<Examination> examinations) const {
   std::vector<std::string> problems;
-  std::set<std::pair<std::string, std::int64_t>> seen;
+  std::set<std::pair<std::string, TimestampUs>> seen;
   for (auto& examination : examinations) {
     examination.view_id = view_.id;
     const auto found = this->problems(examination);
     problems.insert(problems.end(), found.begin(), found.end());
-    if (!seen.emplace(examination.patient_id, examination.taken_at).second &&
+    if (!seen.emplace(examination.patient_id, examination.taken_at_us).second &&
         patientIdProblem(examination.patient_id).empty()) {
       problems.push_back(examination.describe() + ": appears twice in the batch");
     }

@@ -1,258 +1,218 @@
-// FHIR R4 import: Observations -> examinations (grouped by patient and time) and findings
-// (grouped by category, structure and side). Unknown codes are reported, never dropped
-// silently.
-#include <cmath>
+// FHIR R4 import: Observations -> examinations and findings. An examination is identified
+// explicitly (our grouping Observation, else a shared encounter), and only for feeds without
+// either by patient and a time window; every grouping across different times is reported.
+// Unknown codes are reported, never dropped silently.
+#include <algorithm>
 #include <map>
+#include <stdexcept>
 #include <tuple>
 
-#include "fhir_codes.hpp"
+#include "fhir_observation_reader.hpp"
 #include "vicc_anatomy_viz/errors.hpp"
 #include "vicc_anatomy_viz/fhir_bundle.hpp"
-#include "vicc_anatomy_viz/time_format.hpp"
 
 namespace vicc_anatomy_viz {
 
-using fhir_codes::describeCodings;
-using fhir_codes::findCoding;
+using fhir_import::ImportReport;
+using fhir_import::ObservationEntry;
 using nlohmann::json;
 
 namespace {
 
-/// One recorded property value read from an Observation.
-struct ObservedValue {
-  std::string patient;
-  std::int64_t time = 0;
-  std::string category;
-  std::string structure;
-  Side side = Side::kNone;
-  std::string prop_type;
-  Value value;
+/// The observations of one examination.
+struct ExaminationGroup {
+  std::string how;  ///< "grouping Observation", "encounter", "time window"
+  const ObservationEntry* panel = nullptr;
+  std::vector<const ObservationEntry*> members;
 };
 
-/// Collects what cannot be imported: malformed observations always reject the bundle; unknown
-/// codes do too unless the caller chose to skip them (then they become warnings).
-class ImportReport {
- public:
-  ImportReport(bool skip_unknown, std::vector<std::string>& warnings)
-      : skip_unknown_(skip_unknown), warnings_(warnings) {}
-  void malformed(const std::string& message) { problems_.push_back(message); }
-  void unknown(const std::string& message) {
-    if (skip_unknown_) {
-      warnings_.push_back(message + " (skipped)");
-    } else {
-      problems_.push_back(message);
-    }
+/// Assigns every member observation to a panel that lists it; reports dangling, shared and
+/// foreign-patient members. Returns member index -> group key.
+std::map<std::size_t, std::string> assignToPanels(const std::vector<ObservationEntry>& entries,
+                                                  std::map<std::string, ExaminationGroup>& groups,
+                                                  ImportReport& report) {
+  std::map<std::string, const ObservationEntry*> by_reference;
+  for (const auto& entry : entries) {
+    for (const auto& reference : entry.references) by_reference[reference] = &entry;
   }
-  void skipped(const std::string& message) { warnings_.push_back(message); }
-  const std::vector<std::string>& problems() const { return problems_; }
-
- private:
-  bool skip_unknown_;
-  std::vector<std::string>& warnings_;
-  std::vector<std::string> problems_;
-};
-
-std::optional<std::string> readSubject(const json& resource, const std::string& where,
-                                       ImportReport& report) {
-  const json subject = resource.value("subject", json());
-  std::string patient;
-  if (subject.is_object() && subject.contains("identifier") && subject["identifier"].is_object() &&
-      subject["identifier"].contains("value") && subject["identifier"]["value"].is_string()) {
-    patient = subject["identifier"]["value"].get<std::string>();
-  } else if (subject.is_object() && subject.contains("reference") &&
-             subject["reference"].is_string() &&
-             subject["reference"].get<std::string>().rfind("Patient/", 0) == 0) {
-    patient = subject["reference"].get<std::string>().substr(8);
-  }
-  if (patient.empty()) {
-    report.malformed(where + ": subject has no pseudonym identifier or Patient reference");
-    return std::nullopt;
-  }
-  if (const std::string reason = patientIdProblem(patient); !reason.empty()) {
-    report.malformed(where + ": subject: " + reason);
-    return std::nullopt;
-  }
-  return patient;
-}
-
-/// Our anatomy code, or else an FMA coding of a catalogued structure.
-const Structure* readBodySite(const json& body_site, const AnatomyCatalog& anatomy) {
-  if (const json* c = findCoding(body_site, fhir::kAnatomySystem)) {
-    return anatomy.structure((*c)["code"].get<std::string>());
-  }
-  if (const json* fma = findCoding(body_site, fhir::kFmaSystem)) {
-    return anatomy.structureByFmaId("FMA:" + (*fma)["code"].get<std::string>());
-  }
-  return nullptr;
-}
-
-std::optional<Side> sideOfSnomed(const json& concept_json) {
-  const json* c = findCoding(concept_json, fhir::kSnomed);
-  if (!c) return std::nullopt;
-  const std::string code = (*c)["code"].get<std::string>();
-  if (code == fhir::kSnomedLeft) return Side::kLeft;
-  if (code == fhir::kSnomedRight) return Side::kRight;
-  return std::nullopt;
-}
-
-/// The laterality extension, or a SNOMED CT left/right coding in bodySite; none = midline.
-/// nullopt when a laterality is given but is neither left nor right.
-std::optional<Side> readLaterality(const json& body_site) {
-  if (body_site.is_object() && body_site.contains("extension") &&
-      body_site["extension"].is_array()) {
-    for (const auto& extension : body_site["extension"]) {
-      if (extension.is_object() && extension.value("url", "") == fhir::kLateralityExtension) {
-        return sideOfSnomed(extension.value("valueCodeableConcept", json()));
+  std::map<std::size_t, std::string> assigned;
+  for (const auto& panel : entries) {
+    if (!panel.is_panel) continue;
+    const std::string key = "panel:" + std::to_string(panel.index);
+    ExaminationGroup& group = groups[key];
+    group.how = "its grouping Observation";
+    group.panel = &panel;
+    for (const auto& reference : panel.members) {
+      const auto found = by_reference.find(reference);
+      if (found == by_reference.end() || found->second->is_panel) {
+        report.malformed(panel.where + ": hasMember '" + reference +
+                         "' is not an Observation of this bundle (the examination would be "
+                         "incomplete)");
+        continue;
+      }
+      const ObservationEntry& member = *found->second;
+      if (member.patient != panel.patient) {
+        report.malformed(member.where + ": belongs to the examination of " + panel.where +
+                         " but names another patient");
+      } else if (!assigned.emplace(member.index, key).second) {
+        report.malformed(member.where + ": is a member of two examinations");
       }
     }
   }
-  if (findCoding(body_site, fhir::kSnomed)) return sideOfSnomed(body_site);
-  return Side::kNone;
+  return assigned;
 }
 
-/// value[x]: valueInteger, valueBoolean, an integral valueQuantity, or a valueCodeableConcept
-/// of our value code system.
-std::optional<Value> readValue(const json& resource, const std::string& where,
-                               ImportReport& report) {
-  if (resource.contains("valueInteger") && resource["valueInteger"].is_number_integer()) {
-    const auto number = resource["valueInteger"].get<long long>();
-    if (number < -2147483647LL || number > 2147483647LL) {
-      report.malformed(where + ": valueInteger out of range");
-      return std::nullopt;
+/// Members without a panel: by encounter, else per patient in windows of `window_us` from
+/// the first observation of each window.
+void groupLooseMembers(const std::vector<ObservationEntry>& entries,
+                       const std::map<std::size_t, std::string>& assigned, TimestampUs window_us,
+                       std::map<std::string, ExaminationGroup>& groups) {
+  std::map<std::string, std::vector<const ObservationEntry*>> by_patient;
+  for (const auto& entry : entries) {
+    if (entry.is_panel) continue;
+    if (const auto it = assigned.find(entry.index); it != assigned.end()) {
+      groups[it->second].members.push_back(&entry);
+    } else if (!entry.encounter.empty()) {
+      ExaminationGroup& group = groups["encounter:" + entry.patient + "|" + entry.encounter];
+      group.how = "encounter " + entry.encounter;
+      group.members.push_back(&entry);
+    } else {
+      by_patient[entry.patient].push_back(&entry);
     }
-    return Value::number(static_cast<int>(number));
   }
-  if (resource.contains("valueBoolean") && resource["valueBoolean"].is_boolean()) {
-    return Value::label(resource["valueBoolean"].get<bool>() ? "true" : "false");
-  }
-  if (resource.contains("valueQuantity") && resource["valueQuantity"].is_object() &&
-      resource["valueQuantity"].contains("value") &&
-      resource["valueQuantity"]["value"].is_number()) {
-    const double number = resource["valueQuantity"]["value"].get<double>();
-    if (std::floor(number) != number || std::fabs(number) > 1e6) {
-      report.malformed(where + ": valueQuantity " + resource["valueQuantity"]["value"].dump() +
-                       " is not an integer score");
-      return std::nullopt;
+  for (auto& [patient, list] : by_patient) {
+    std::stable_sort(list.begin(), list.end(),
+                     [](const auto* a, const auto* b) { return a->time < b->time; });
+    std::string key;
+    TimestampUs window_start = 0;
+    for (const ObservationEntry* entry : list) {
+      if (key.empty() || entry->time - window_start > window_us) {
+        window_start = entry->time;
+        key = "time:" + patient + "|" + std::to_string(entry->index);
+        groups[key].how = "time window";
+      }
+      groups[key].members.push_back(entry);
     }
-    return Value::number(static_cast<int>(number));
   }
-  if (resource.contains("valueCodeableConcept")) {
-    const json& concept_json = resource["valueCodeableConcept"];
-    if (const json* c = findCoding(concept_json, fhir::kValueSystem)) {
-      return Value::label((*c)["code"].get<std::string>());
-    }
-    report.unknown(where + ": unknown value code " + describeCodings(concept_json));
-    return std::nullopt;
-  }
-  report.malformed(where +
-                   ": no valueInteger, valueBoolean, valueQuantity or valueCodeableConcept");
-  return std::nullopt;
 }
 
-std::optional<ObservedValue> readObservation(const json& resource, const std::string& where,
-                                             const EncodingModel& model, ImportReport& report) {
-  const std::string status = resource.value("status", "");
-  if (status == "entered-in-error" || status == "cancelled") {
-    report.skipped(where + ": status '" + status + "', not imported");
-    return std::nullopt;
+/// One examination from a group: time, status, completeness, findings.
+std::optional<Examination> buildExamination(const ExaminationGroup& group, ImportReport& report) {
+  const ObservationEntry& first = group.panel ? *group.panel : *group.members.front();
+  Examination examination;
+  examination.patient_id = first.patient;
+  examination.source = "fhir";
+  TimestampUs earliest = first.time, latest = first.time;
+  std::size_t skipped = 0;
+  std::map<std::tuple<std::string, std::string, Side>, Finding> findings;
+  std::map<std::tuple<std::string, std::string, Side, std::string>, std::string> seen;
+  const std::size_t problems_before = report.problems().size();
+  for (const ObservationEntry* member : group.members) {
+    earliest = std::min(earliest, member->time);
+    latest = std::max(latest, member->time);
+    if (member->status == ExaminationStatus::kPreliminary) {
+      examination.status = ExaminationStatus::kPreliminary;
+    }
+    if (!member->skipped.empty()) {
+      ++skipped;
+      continue;
+    }
+    const auto key =
+        std::make_tuple(member->category, member->structure, member->side, member->prop_type);
+    if (const auto [it, fresh] = seen.emplace(key, member->where); !fresh) {
+      report.malformed(member->where + ": repeats the observation of " + it->second);
+      continue;
+    }
+    Finding& finding = findings[{member->category, member->structure, member->side}];
+    finding.category = member->category;
+    finding.structure = member->structure;
+    finding.side = member->side;
+    finding.values[member->prop_type] = member->value;
   }
-  if (status != "final" && status != "amended" && status != "corrected" &&
-      status != "preliminary") {
-    report.malformed(where + ": status '" + status +
-                     "' (expected final, amended, corrected or preliminary)");
-    return std::nullopt;
+  examination.taken_at_us = group.panel ? group.panel->time : earliest;
+  if (group.panel && group.panel->status == ExaminationStatus::kPreliminary) {
+    examination.status = ExaminationStatus::kPreliminary;
   }
-  const json code = resource.value("code", json());
-  const json* our_code = findCoding(code, fhir::kCodeSystem);
-  const auto coded = our_code
-                         ? fhir_codes::propertyOfCode(model, (*our_code)["code"].get<std::string>())
-                         : std::nullopt;
-  if (!coded) {
-    report.unknown(where + ": unknown code " + describeCodings(code));
-    return std::nullopt;
+  for (auto& [unused, finding] : findings) examination.findings.push_back(std::move(finding));
+  const std::string name = examination.describe();
+  if (group.panel && group.panel->states_all_normal) {
+    const bool all_normal = *group.panel->states_all_normal;
+    if (all_normal && !group.members.empty()) {
+      report.malformed(group.panel->where + ": states no abnormal findings but has members");
+    } else if (!all_normal && group.members.empty()) {
+      report.malformed(group.panel->where + ": states abnormal findings but has no members");
+    }
   }
-  const auto patient = readSubject(resource, where, report);
-  if (!patient) return std::nullopt;
-  const std::string when_text =
-      resource.contains("effectiveDateTime") && resource["effectiveDateTime"].is_string()
-          ? resource["effectiveDateTime"].get<std::string>()
-          : "";
-  const auto when = parseTimestamp(when_text);
-  if (!when) {
-    report.malformed(where + ": effectiveDateTime '" + when_text +
-                     "' missing or not an ISO 8601 date-time");
-    return std::nullopt;
+  if (group.panel && !group.panel->partial_reason.empty()) {
+    examination.partial = true;
+    examination.partial_reason = group.panel->partial_reason;
   }
-  const json body_site = resource.value("bodySite", json());
-  const Structure* structure = readBodySite(body_site, model.anatomy());
-  if (!structure) {
-    report.unknown(where + ": unknown body site " + describeCodings(body_site));
-    return std::nullopt;
+  if (skipped > 0) {
+    examination.partial = true;
+    examination.partial_reason += std::string(examination.partial_reason.empty() ? "" : "; ") +
+                                  std::to_string(skipped) + " observation(s) not imported";
   }
-  const auto side = readLaterality(body_site);
-  if (!side) {
-    report.unknown(where + ": laterality is neither SNOMED CT " + fhir::kSnomedLeft +
-                   " (left) nor " + fhir::kSnomedRight + " (right)");
-    return std::nullopt;
+  if (latest != earliest || (group.panel && !group.members.empty() && latest != first.time)) {
+    report.warn(name + ": " + std::to_string(group.members.size()) +
+                " observation(s) at different times grouped by " + group.how + " (" +
+                formatTimestamp(earliest) + " .. " + formatTimestamp(latest) + ")");
   }
-  const auto value = readValue(resource, where, report);
-  if (!value) return std::nullopt;
-  return ObservedValue{*patient,         *when, coded->category->id, structure->id, *side,
-                       coded->prop_type, *value};
+  if (report.problems().size() != problems_before) return std::nullopt;
+  return examination;
 }
 
 }  // namespace
 
+void FhirImportOptions::validate() const {
+  if (grouping_window_seconds < 0) {
+    throw std::invalid_argument("grouping_window_seconds must be >= 0");
+  }
+  plausibility.validate();
+}
+
+bool isFhirBundle(const json& document) {
+  return document.is_object() && document.value("resourceType", std::string()) == "Bundle";
+}
+
 FhirImport examinationsFromFhirBundle(const json& bundle, const EncodingModel& model,
                                       const FhirImportOptions& options) {
+  options.validate();
   if (!isFhirBundle(bundle)) throw ExchangeError("not a FHIR Bundle (resourceType != Bundle)");
   const json entries = bundle.value("entry", json::array());
   if (!entries.is_array()) throw ExchangeError("Bundle.entry must be a list");
   FhirImport result;
   ImportReport report(options.skip_unknown, result.warnings);
-  using ExaminationKey = std::pair<std::string, std::int64_t>;
-  using FindingKey = std::tuple<std::string, std::string, Side>;
-  std::map<ExaminationKey, std::map<FindingKey, Finding>> grouped;
-  std::map<std::tuple<ExaminationKey, FindingKey, std::string>, std::size_t> first_entry;
-
+  std::vector<ObservationEntry> observations;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const json resource = entries[i].is_object() ? entries[i].value("resource", json()) : json();
-    const std::string type = resource.is_object() ? resource.value("resourceType", "") : "";
+    const json type_json = resource.is_object() ? resource.value("resourceType", json()) : json();
+    const std::string type = type_json.is_string() ? type_json.get<std::string>() : "";
     if (type != "Observation") {
       // Other resources (Patient, Encounter, ...) may carry names: only the type is reported.
-      report.skipped("entry " + std::to_string(i) + ": " +
-                     (type.empty() ? std::string("entry without a resource") : type + " resource") +
-                     " ignored (only Observation is imported)");
+      report.warn("entry " + std::to_string(i) + ": " +
+                  (type.empty() ? std::string("entry without a resource") : type + " resource") +
+                  " ignored (only Observation is imported)");
       continue;
     }
-    const std::string where =
-        "entry " + std::to_string(i) + " (Observation " + resource.value("id", "?") + ")";
-    const auto observed = readObservation(resource, where, model, report);
-    if (!observed) continue;
-    const ExaminationKey examination{observed->patient, observed->time};
-    const FindingKey finding_key{observed->category, observed->structure, observed->side};
-    const auto key = std::make_tuple(examination, finding_key, observed->prop_type);
-    if (const auto previous = first_entry.find(key); previous != first_entry.end()) {
-      report.malformed(where + ": repeats the observation of entry " +
-                       std::to_string(previous->second));
-      continue;
+    if (auto entry = fhir_import::readObservationEntry(entries[i], i, model, options, report)) {
+      observations.push_back(std::move(*entry));
     }
-    first_entry[key] = i;
-    Finding& finding = grouped[examination][finding_key];
-    finding.category = observed->category;
-    finding.structure = observed->structure;
-    finding.side = observed->side;
-    finding.values[observed->prop_type] = observed->value;
+  }
+  std::map<std::string, ExaminationGroup> groups;
+  const auto assigned = assignToPanels(observations, groups, report);
+  groupLooseMembers(observations, assigned,
+                    static_cast<TimestampUs>(options.grouping_window_seconds) * kMicrosPerSecond,
+                    groups);
+  for (const auto& [key, group] : groups) {
+    if (auto examination = buildExamination(group, report)) {
+      result.examinations.push_back(std::move(*examination));
+    }
   }
   if (!report.problems().empty()) throw ValidationError(report.problems());
-  for (auto& [key, findings] : grouped) {
-    Examination examination;
-    examination.patient_id = key.first;
-    examination.taken_at = key.second;
-    examination.source = "fhir";
-    for (auto& [finding_key, finding] : findings) examination.findings.push_back(finding);
-    result.examinations.push_back(std::move(examination));
-  }
+  std::sort(result.examinations.begin(), result.examinations.end(),
+            [](const Examination& a, const Examination& b) {
+              return std::tie(a.patient_id, a.taken_at_us) < std::tie(b.patient_id, b.taken_at_us);
+            });
   return result;
 }
 

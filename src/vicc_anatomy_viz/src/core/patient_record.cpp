@@ -18,7 +18,17 @@ std::string Finding::describe() const {
 }
 
 std::string Examination::describe() const {
-  return "patient " + patient_id + ", examination " + formatTimestamp(taken_at);
+  return "patient " + patient_id + ", examination " + formatTimestamp(taken_at_us);
+}
+
+std::string toString(ExaminationStatus status) {
+  return status == ExaminationStatus::kPreliminary ? "preliminary" : "final";
+}
+
+std::optional<ExaminationStatus> examinationStatusFromString(const std::string& text) {
+  if (text == "final") return ExaminationStatus::kFinal;
+  if (text == "preliminary") return ExaminationStatus::kPreliminary;
+  return std::nullopt;
 }
 
 std::string patientIdProblem(const std::string& patient_id) {

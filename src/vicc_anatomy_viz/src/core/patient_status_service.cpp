@@ -86,7 +86,7 @@ std::vector<PatientSummary> PatientStatusService::listPatients() {
   }
 }
 
-std::vector<std::int64_t> PatientStatusService::examinationDates(const std::string& patient_id) {
+std::vector<TimestampUs> PatientStatusService::examinationDates(const std::string& patient_id) {
   if (const std::string reason = patientIdProblem(patient_id); !reason.empty()) {
     throw ValidationError({reason});
   }
@@ -103,7 +103,7 @@ std::optional<Examination> PatientStatusService::examinationAt(const std::string
   if (const std::string reason = patientIdProblem(patient_id); !reason.empty()) {
     throw ValidationError({reason});
   }
-  std::int64_t bound = std::numeric_limits<std::int64_t>::max();
+  TimestampUs bound = std::numeric_limits<TimestampUs>::max();
   if (!date.empty()) {
     const auto parsed = parseUpperBound(date);
     if (!parsed) {

@@ -3,6 +3,7 @@
 #include <climits>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "vicc_anatomy_viz/errors.hpp"
@@ -17,7 +18,12 @@ namespace {
 /// Collects problems by JSON path instead of stopping at the first one.
 class Reader {
  public:
-  explicit Reader(std::string source) : source_(std::move(source)) {}
+  Reader(std::string source, std::vector<std::string>* warnings, const JsonImportOptions& options)
+      : source_(std::move(source)), warnings_(warnings), options_(options) {}
+
+  void warning(const std::string& path, const std::string& message) {
+    if (warnings_) warnings_->push_back(path + ": " + message);
+  }
 
   void problem(const std::string& path, const std::string& message) {
     problems_.push_back(path + ": " + message);
@@ -47,15 +53,49 @@ class Reader {
     return &*it;
   }
 
-  std::int64_t timestamp(const json& object, const std::string& path) {
+  TimestampUs timestamp(const json& object, const std::string& path) {
     const std::string text = this->text(object, "taken_at", path);
     if (text.empty()) return 0;
-    const auto seconds = parseTimestamp(text);
-    if (!seconds) {
-      problem(path + ".taken_at", "'" + text + "' is not an ISO 8601 date or date-time");
+    std::string why;
+    const auto parsed = parseTime(text, &why);
+    if (!parsed) {
+      problem(path + ".taken_at", "'" + text + "' is not an ISO 8601 date or date-time: " + why);
       return 0;
     }
-    return *seconds;
+    if (const std::string implausible = options_.plausibility.problem(parsed->us);
+        !implausible.empty()) {
+      problem(path + ".taken_at", "implausible examination time: " + implausible);
+    }
+    if (!parsed->has_offset && !parsed->date_only) {
+      warning(path + ".taken_at", "'" + text + "' has no UTC offset; taken as UTC");
+    }
+    return parsed->us;
+  }
+
+  /// "status" and "partial"/"partial_reason" of an examination.
+  void completeness(const json& object, Examination& examination, const std::string& path) {
+    const std::string status = text(object, "status", path, false);
+    if (!status.empty()) {
+      const auto parsed = examinationStatusFromString(status);
+      if (!parsed) {
+        problem(path + ".status", "'" + status + "' is not final or preliminary");
+      } else {
+        examination.status = *parsed;
+      }
+    }
+    const auto partial = object.find("partial");
+    if (partial != object.end() && !partial->is_boolean()) {
+      problem(path + ".partial", "must be true or false");
+    } else if (partial != object.end()) {
+      examination.partial = partial->get<bool>();
+    }
+    examination.partial_reason = text(object, "partial_reason", path, false);
+    if (!examination.partial && !examination.partial_reason.empty()) {
+      problem(path + ".partial_reason", "given for an examination that is not partial");
+    }
+    if (examination.partial && examination.partial_reason.empty()) {
+      examination.partial_reason = "marked partial in the imported file";
+    }
   }
 
   Finding finding(const json& object, const std::string& path) {
@@ -88,7 +128,7 @@ class Reader {
           finding.values[prop_type] = Value::number(static_cast<int>(number));
         }
       } else if (value.is_number()) {
-        problem(where, value.dump() + " is not an integer");
+        problem(where, "is not an integer");
       } else if (value.is_string()) {
         finding.values[prop_type] = Value::label(value.get<std::string>());
       } else if (value.is_boolean()) {
@@ -109,7 +149,8 @@ class Reader {
       problem(path, "an examination must be an object");
       return examination;
     }
-    examination.taken_at = timestamp(object, path);
+    examination.taken_at_us = timestamp(object, path);
+    completeness(object, examination, path);
     if (const json* findings = array(object, "findings", path)) {
       for (std::size_t i = 0; i < findings->size(); ++i) {
         examination.findings.push_back(
@@ -128,6 +169,8 @@ class Reader {
 
  private:
   std::string source_;
+  std::vector<std::string>* warnings_;
+  JsonImportOptions options_;
   std::vector<std::string> problems_;
 };
 
@@ -152,9 +195,70 @@ json findingsToJson(const Examination& examination) {
   return findings;
 }
 
+/// Status, completeness, provenance and findings of an examination (both formats).
+json examinationBody(const Examination& examination) {
+  json body = {{"status", toString(examination.status)}};
+  if (examination.partial) {
+    body["partial"] = true;
+    body["partial_reason"] = examination.partial_reason;
+  }
+  if (examination.recorded_at != 0) {
+    body["provenance"] = {
+        {"source", examination.source},
+        {"recorded_at", formatTimestamp(examination.recorded_at * kMicrosPerSecond)}};
+  }
+  body["findings"] = findingsToJson(examination);
+  return body;
+}
+
+/// Rejects an object that repeats a key: nlohmann keeps the last one silently.
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(const std::string& origin) : origin_(origin) {}
+
+  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+        objects_.emplace_back();
+        break;
+      case json::parse_event_t::object_end:
+        if (!objects_.empty()) objects_.pop_back();
+        break;
+      case json::parse_event_t::key: {
+        const std::string key = parsed.get<std::string>();
+        if (!objects_.empty() && !objects_.back().keys.insert(key).second) {
+          throw ExchangeError(origin_ + ": key \"" + key + "\" appears twice in the object at " +
+                              path() + " (which value is meant is ambiguous)");
+        }
+        if (!objects_.empty()) objects_.back().current = key;
+        break;
+      }
+      default:
+        break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    std::set<std::string> keys;
+    std::string current;
+  };
+  std::string path() const {
+    std::string out = "$";
+    for (std::size_t i = 0; i + 1 < objects_.size(); ++i) out += "." + objects_[i].current;
+    return out;
+  }
+
+  std::string origin_;
+  std::vector<Frame> objects_;
+};
+
 }  // namespace
 
-std::vector<Examination> examinationsFromJson(const json& document, const std::string& source) {
+std::vector<Examination> examinationsFromJson(const json& document, const std::string& source,
+                                              std::vector<std::string>* warnings,
+                                              const JsonImportOptions& options) {
   if (!document.is_object()) throw ExchangeError("a records document must be a JSON object");
   const std::string format = document.value("format", "");
   if (format != kRecordsFormat && format != kExaminationFormat) {
@@ -164,7 +268,8 @@ std::vector<Examination> examinationsFromJson(const json& document, const std::s
   if (!document.contains("version") || document["version"] != 1) {
     throw ExchangeError("unsupported " + format + " version (this program reads version 1)");
   }
-  Reader reader(source);
+  options.plausibility.validate();
+  Reader reader(source, warnings, options);
   std::vector<Examination> examinations;
   if (format == kExaminationFormat) {
     const std::string patient = reader.patientId(document, "patient", "$");
@@ -178,6 +283,13 @@ std::vector<Examination> examinationsFromJson(const json& document, const std::s
         continue;
       }
       const std::string id = reader.patientId(patient, "id", path);
+      if (const auto history = patient.find("superseded");
+          history != patient.end() && history->is_array() && !history->empty()) {
+        reader.warning(path + ".superseded",
+                       std::to_string(history->size()) +
+                           " superseded version(s) are history and are not imported (use "
+                           "vicc_patient backup/restore to move a database with its history)");
+      }
       if (const json* list = reader.array(patient, "examinations", path)) {
         for (std::size_t e = 0; e < list->size(); ++e) {
           examinations.push_back(reader.examination(
@@ -191,32 +303,46 @@ std::vector<Examination> examinationsFromJson(const json& document, const std::s
 }
 
 json examinationToJson(const Examination& examination) {
-  return {{"format", kExaminationFormat},
-          {"version", 1},
-          {"patient", examination.patient_id},
-          {"taken_at", formatTimestamp(examination.taken_at)},
-          {"findings", findingsToJson(examination)}};
+  json document = {{"format", kExaminationFormat},
+                   {"version", 1},
+                   {"patient", examination.patient_id},
+                   {"taken_at", formatTimestamp(examination.taken_at_us)}};
+  document.update(examinationBody(examination));
+  return document;
 }
 
-json recordsToJson(const std::vector<Examination>& examinations) {
+json recordsToJson(const std::vector<Examination>& examinations,
+                   const std::vector<SupersededExamination>& history) {
   json patients = json::array();
   std::map<std::string, std::size_t> index;
-  for (const auto& examination : examinations) {
-    auto it = index.find(examination.patient_id);
+  auto patientEntry = [&](const std::string& patient_id) -> json& {
+    auto it = index.find(patient_id);
     if (it == index.end()) {
-      it = index.emplace(examination.patient_id, patients.size()).first;
-      patients.push_back({{"id", examination.patient_id}, {"examinations", json::array()}});
+      it = index.emplace(patient_id, patients.size()).first;
+      patients.push_back({{"id", patient_id}, {"examinations", json::array()}});
     }
-    patients[it->second]["examinations"].push_back(
-        {{"taken_at", formatTimestamp(examination.taken_at)},
-         {"findings", findingsToJson(examination)}});
+    return patients[it->second];
+  };
+  for (const auto& examination : examinations) {
+    json entry = {{"taken_at", formatTimestamp(examination.taken_at_us)}};
+    entry.update(examinationBody(examination));
+    patientEntry(examination.patient_id)["examinations"].push_back(entry);
+  }
+  for (const auto& version : history) {
+    json entry = {{"taken_at", formatTimestamp(version.examination.taken_at_us)},
+                  {"superseded_at", formatTimestamp(version.superseded_at * kMicrosPerSecond)},
+                  {"replaced_by_source", version.replaced_by_source}};
+    entry.update(examinationBody(version.examination));
+    json& patient = patientEntry(version.examination.patient_id);
+    if (!patient.contains("superseded")) patient["superseded"] = json::array();
+    patient["superseded"].push_back(entry);
   }
   return {{"format", kRecordsFormat}, {"version", 1}, {"patients", patients}};
 }
 
 json parseJsonText(const std::string& text, const std::string& origin) {
   try {
-    return json::parse(text);
+    return json::parse(text, DuplicateKeyCheck(origin));
   } catch (const json::parse_error& e) {
     throw ExchangeError(origin + ": invalid JSON (" + std::string(e.what()) + ")");
   }

@@ -38,6 +38,24 @@ const std::vector<Migration>& schemaMigrations() {
       {2, "provenance of examinations (source format and time of writing)",
        "ALTER TABLE examinations ADD COLUMN source TEXT NOT NULL DEFAULT 'unknown';\n"
        "ALTER TABLE examinations ADD COLUMN recorded_at INTEGER NOT NULL DEFAULT 0;\n"},
+      {3,
+       "microsecond examination times, preliminary and partial examinations, superseded "
+       "versions kept as history",
+       "UPDATE examinations SET taken_at = taken_at * 1000000;\n"
+       "ALTER TABLE examinations ADD COLUMN status TEXT NOT NULL DEFAULT 'final'\n"
+       "  CHECK (status IN ('final', 'preliminary'));\n"
+       "ALTER TABLE examinations ADD COLUMN partial INTEGER NOT NULL DEFAULT 0\n"
+       "  CHECK (partial IN (0, 1));\n"
+       "ALTER TABLE examinations ADD COLUMN partial_reason TEXT NOT NULL DEFAULT '';\n"
+       "CREATE TABLE superseded_examinations (\n"
+       "  id INTEGER PRIMARY KEY,\n"
+       "  patient_id INTEGER NOT NULL REFERENCES patients(id) ON DELETE CASCADE,\n"
+       "  taken_at INTEGER NOT NULL,\n"
+       "  recorded_at INTEGER NOT NULL,\n"
+       "  superseded_at INTEGER NOT NULL,\n"
+       "  replaced_by_source TEXT NOT NULL,\n"
+       "  record TEXT NOT NULL);\n"
+       "CREATE INDEX superseded_by_time ON superseded_examinations (patient_id, taken_at);\n"},
   };
   return migrations;
 }

@@ -159,6 +159,24 @@ EncodedStructure StatusEncoder::encodeFinding(const Finding& finding) const {
 
 namespace {
 
+/// A partial or preliminary examination says so on every structure and in the notes: the
+/// overlay is what a clinician reads, and a missing finding of a partial examination is
+/// unknown, not normal.
+void markIncompleteness(EncodedStatus& status) {
+  std::string tag;
+  if (status.partial) {
+    status.notes.insert(status.notes.begin(),
+                        "PARTIAL EXAMINATION (" + status.partial_reason +
+                            "): structures without a finding are not known to be normal");
+    tag += " [partial examination]";
+  }
+  if (status.examination_status == ExaminationStatus::kPreliminary) {
+    status.notes.insert(status.notes.begin(), "PRELIMINARY examination result");
+    tag += " [preliminary]";
+  }
+  for (auto& entry : status.structures) entry.overlay_text += tag;
+}
+
 /// Spatial non-injectivity in one status: several categories on one structure instance are
 /// listed as an alternation (the first, in view order, is shown by default).
 void markAlternations(EncodedStatus& status) {
@@ -256,7 +274,10 @@ EncodedStatus StatusEncoder::encode(const std::string& patient_id,
   std::map<std::string, std::size_t> counts;  // displayed findings per category, filter aside
   if (examination) {
     status.has_examination = true;
-    status.examination_time = examination->taken_at;
+    status.examination_time = examination->taken_at_us;
+    status.examination_status = examination->status;
+    status.partial = examination->partial;
+    status.partial_reason = examination->partial_reason;
     const AnatomyCatalog& anatomy = model_.anatomy();
     const auto usable = usableFindings(*examination, status.notes);
     for (const auto& entry : view_.categories) {
@@ -275,6 +296,7 @@ EncodedStatus StatusEncoder::encode(const std::string& patient_id,
       for (const Finding* finding : findings) status.structures.push_back(encodeFinding(*finding));
     }
     markAlternations(status);
+    markIncompleteness(status);
   }
   status.legend = legend(counts, options.hidden_categories);
   return status;

@@ -95,7 +95,7 @@ bool PatientStatusServer::listDates(vicc_msgs::ListExaminationDates::Request& re
   return guarded("list_examination_dates", response.success, response.message, [&] {
     for (const auto time : service_->examinationDates(request.patient_id)) {
       response.dates.push_back(formatTimestamp(time));
-      response.stamps.push_back(ros::Time(static_cast<double>(time)));
+      response.stamps.push_back(rosTime(time));
     }
   });
 }
@@ -117,8 +117,10 @@ bool PatientStatusServer::record(vicc_msgs::RecordExamination::Request& request,
     Examination examination = examinationFromRequest(service_->model(), request.patient_id,
                                                      request.taken_at, request.findings);
     const std::string described = examination.describe();
-    service_->record({examination},
-                     request.replace ? WriteMode::kReplace : WriteMode::kRejectExisting);
+    const WriteMode mode = !request.replace             ? WriteMode::kRejectExisting
+                           : request.replace_with_empty ? WriteMode::kReplaceEvenWithEmpty
+                                                        : WriteMode::kReplace;
+    service_->record({examination}, mode);
     response.message = "recorded " + described;
     ROS_INFO("patient_status_server: %s", response.message.c_str());
     // Keep the published status current when the selected patient got a new examination.

@@ -59,6 +59,14 @@ vicc_msgs::EncodedStructure toMessage(const EncodedStructure& entry) {
 
 }  // namespace
 
+ros::Time rosTime(TimestampUs time) {
+  // ros::Time starts in 1970 and ends in 2106; examination_time (text) is exact for all times.
+  const std::int64_t seconds = wholeSeconds(time);
+  if (seconds < 0 || seconds > 0xffffffffLL) return ros::Time();
+  return ros::Time(static_cast<std::uint32_t>(seconds),
+                   static_cast<std::uint32_t>(microsWithinSecond(time) * 1000));
+}
+
 vicc_msgs::EncodedStatus toMessage(const EncodedStatus& status) {
   vicc_msgs::EncodedStatus msg;
   msg.patient_id = status.patient_id;
@@ -67,7 +75,10 @@ vicc_msgs::EncodedStatus toMessage(const EncodedStatus& status) {
   msg.has_examination = status.has_examination;
   if (status.has_examination) {
     msg.examination_time = formatTimestamp(status.examination_time);
-    msg.examination_stamp = ros::Time(static_cast<double>(status.examination_time));
+    msg.examination_stamp = rosTime(status.examination_time);
+    msg.examination_status = toString(status.examination_status);
+    msg.examination_partial = status.partial;
+    msg.partial_reason = status.partial_reason;
   }
   for (const auto& entry : status.structures) msg.structures.push_back(toMessage(entry));
   for (const auto& alternation : status.alternations) {
@@ -113,11 +124,15 @@ Examination examinationFromRequest(const EncodingModel& model, const std::string
   Examination examination;
   examination.patient_id = patient_id;
   examination.source = "service";
-  const auto time = parseTimestamp(taken_at);
+  std::string why;
+  const auto time = parseTime(taken_at, &why);
   if (!time) {
-    problems.push_back("taken_at '" + taken_at + "' is not an ISO 8601 date or date-time");
+    problems.push_back("taken_at '" + taken_at + "' is not an ISO 8601 date or date-time: " + why);
+  } else if (const std::string implausible = TimePlausibility().problem(time->us);
+             !implausible.empty()) {
+    problems.push_back("taken_at: implausible examination time: " + implausible);
   } else {
-    examination.taken_at = *time;
+    examination.taken_at_us = time->us;
   }
   for (std::size_t i = 0; i < findings.size(); ++i) {
     const auto& msg = findings[i];

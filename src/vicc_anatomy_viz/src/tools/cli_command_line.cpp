@@ -4,14 +4,17 @@
 
 namespace vicc_anatomy_viz::cli {
 
-const std::set<std::string> kCommands = {"init", "import", "export", "list",  "dates",
-                                         "show", "encode", "record", "check", "config"};
+const std::set<std::string> kCommands = {"init",   "import", "export", "list",   "dates",  "show",
+                                         "encode", "record", "check",  "config", "history"};
+const std::set<std::string> kReadCommands = {"export", "list",  "dates",  "show",
+                                             "encode", "check", "history"};
 
 namespace {
-const std::set<std::string> kFlags = {"--json", "--replace", "--skip-unknown", "--help", "-h"};
-const std::set<std::string> kOptions = {"--db",      "--config",      "--anatomy", "--view",
-                                        "--patient", "--date",        "--format",  "--out",
-                                        "--hide",    "--busy-timeout"};
+const std::set<std::string> kFlags = {"--json",         "--replace", "--replace-with-empty",
+                                      "--skip-unknown", "--help",    "-h"};
+const std::set<std::string> kOptions = {
+    "--db",     "--config", "--anatomy", "--view",         "--patient",      "--date",
+    "--format", "--out",    "--hide",    "--busy-timeout", "--group-window", "--max-future"};
 }  // namespace
 
 std::string CommandLine::option(const std::string& name, const std::string& fallback) const {
@@ -23,6 +26,19 @@ std::string CommandLine::required(const std::string& name) const {
   const auto it = options.find(name);
   if (it == options.end() || it->second.empty()) throw UsageError(command + " needs " + name);
   return it->second;
+}
+
+int CommandLine::integerOption(const std::string& name, int fallback) const {
+  const auto it = options.find(name);
+  if (it == options.end()) return fallback;
+  try {
+    std::size_t used = 0;
+    const int value = std::stoi(it->second, &used);
+    if (used != it->second.size() || value < 0) throw std::invalid_argument(it->second);
+    return value;
+  } catch (const std::exception&) {
+    throw UsageError(name + " needs a non-negative whole number, not '" + it->second + "'");
+  }
 }
 
 void CommandLine::expectPositional(std::size_t count) const {

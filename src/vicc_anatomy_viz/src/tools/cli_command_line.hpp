@@ -16,6 +16,8 @@ class UsageError : public std::runtime_error {
 };
 
 extern const std::set<std::string> kCommands;
+/// Commands that only read: they open the database read-only and never create it.
+extern const std::set<std::string> kReadCommands;
 
 struct CommandLine {
   std::string command;
@@ -27,6 +29,8 @@ struct CommandLine {
   /// UsageError naming the command when the option is missing.
   std::string required(const std::string& name) const;
   bool flag(const std::string& name) const { return flags.count(name) > 0; }
+  /// A non-negative integer option; UsageError naming it otherwise.
+  int integerOption(const std::string& name, int fallback) const;
   /// UsageError unless exactly `count` file arguments were given.
   void expectPositional(std::size_t count) const;
 };

@@ -1,6 +1,13 @@
 #include "vicc_anatomy_viz/patient_cli.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -29,15 +36,44 @@ PatientStatusConfig serviceConfig(const CommandLine& line) {
   config.anatomy_config = line.option("--anatomy", defaultAnatomyConfigPath());
   config.view_id = line.option("--view", config.view_id);
   config.store.path = line.option("--db", defaultDatabasePath());
-  const std::string timeout = line.option("--busy-timeout", "5000");
-  try {
-    std::size_t used = 0;
-    config.store.busy_timeout_ms = std::stoi(timeout, &used);
-    if (used != timeout.size()) throw std::invalid_argument(timeout);
-  } catch (const std::exception&) {
-    throw UsageError("--busy-timeout needs milliseconds, not '" + timeout + "'");
-  }
+  config.store.busy_timeout_ms = line.integerOption("--busy-timeout", 5000);
+  config.store.read_only = cli::kReadCommands.count(line.command) > 0;
   return config;
+}
+
+/// Whether an output path is the database or one of its journals (also through links).
+bool isDatabaseOrCompanion(const std::string& candidate, const std::string& db_path) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path target = fs::weakly_canonical(candidate, error);
+  for (const char* suffix : {"", "-wal", "-shm", "-journal"}) {
+    const fs::path companion = db_path + suffix;
+    if (fs::exists(companion, error) && fs::exists(candidate, error) &&
+        fs::equivalent(companion, candidate, error)) {
+      return true;
+    }
+    if (fs::weakly_canonical(companion, error) == target) return true;
+  }
+  return false;
+}
+
+/// Writes patient data as a private file (0600), atomically: a failed write leaves any
+/// earlier file as it was.
+void writePrivateFile(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".part";
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+  bool ok = fd >= 0 && ::fchmod(fd, 0600) == 0;
+  for (std::size_t done = 0; ok && done < text.size();) {
+    const ssize_t written = ::write(fd, text.data() + done, text.size() - done);
+    ok = written > 0;
+    if (ok) done += static_cast<std::size_t>(written);
+  }
+  ok = ok && ::fsync(fd) == 0;
+  if (fd >= 0) ok = ::close(fd) == 0 && ok;
+  if (!ok || ::rename(temporary.c_str(), path.c_str()) != 0) {
+    ::unlink(temporary.c_str());
+    throw ExchangeError("cannot write '" + path + "': " + std::strerror(errno));
+  }
 }
 
 std::string hexColor(const Rgba& color) {
@@ -48,32 +84,55 @@ std::string hexColor(const Rgba& color) {
   return buffer;
 }
 
-/// Reads a records document of ours or a FHIR Bundle.
-std::vector<Examination> readExaminations(const std::string& path, const EncodingModel& model,
-                                          bool skip_unknown, std::ostream& err) {
+/// Reads a records document of ours or a FHIR Bundle; prints the import's warnings.
+std::vector<Examination> readExaminations(const CommandLine& line, const std::string& path,
+                                          const EncodingModel& model, std::ostream& err) {
   const nlohmann::json document = parseJsonText(readTextFile(path), path);
+  TimePlausibility plausibility;
+  plausibility.max_future_seconds = line.integerOption("--max-future", 24 * 3600);
+  std::vector<std::string> warnings;
+  std::vector<Examination> examinations;
   if (isFhirBundle(document)) {
     FhirImportOptions options;
-    options.skip_unknown = skip_unknown;
+    options.skip_unknown = line.flag("--skip-unknown");
+    options.grouping_window_seconds = line.integerOption("--group-window", 600);
+    options.plausibility = plausibility;
     FhirImport imported = examinationsFromFhirBundle(document, model, options);
-    for (const auto& warning : imported.warnings) err << "warning: " << warning << "\n";
-    return std::move(imported.examinations);
+    warnings = std::move(imported.warnings);
+    examinations = std::move(imported.examinations);
+  } else {
+    JsonImportOptions options;
+    options.plausibility = plausibility;
+    examinations = examinationsFromJson(document, "json", &warnings, options);
   }
-  return examinationsFromJson(document, "json");
+  for (const auto& warning : warnings) err << "warning: " << path << ": " << warning << "\n";
+  return examinations;
+}
+
+WriteMode writeMode(const CommandLine& line) {
+  if (line.flag("--replace-with-empty")) return WriteMode::kReplaceEvenWithEmpty;
+  return line.flag("--replace") ? WriteMode::kReplace : WriteMode::kRejectExisting;
+}
+
+/// "preliminary, partial (2 observations not imported)"; "" for a complete final one.
+std::string completeness(ExaminationStatus status, bool partial, const std::string& reason) {
+  std::string text = status == ExaminationStatus::kPreliminary ? "PRELIMINARY" : "";
+  if (partial) text += (text.empty() ? "" : ", ") + std::string("PARTIAL (") + reason + ")";
+  return text;
 }
 
 int commandImport(const CommandLine& line, PatientStatusService& service, std::ostream& out,
                   std::ostream& err, bool single) {
   line.expectPositional(1);
   const std::string& path = line.positional.front();
-  auto examinations = readExaminations(path, service.model(), line.flag("--skip-unknown"), err);
+  auto examinations = readExaminations(line, path, service.model(), err);
   if (single && examinations.size() != 1) {
     throw ValidationError({path + ": record takes exactly one examination, the file holds " +
                            std::to_string(examinations.size()) + " (use import)"});
   }
   std::set<std::string> patients;
   for (const auto& examination : examinations) patients.insert(examination.patient_id);
-  const WriteMode mode = line.flag("--replace") ? WriteMode::kReplace : WriteMode::kRejectExisting;
+  const WriteMode mode = writeMode(line);
   const Examination first = examinations.empty() ? Examination() : examinations.front();
   const std::size_t written = service.record(std::move(examinations), mode);
   if (single) {
@@ -88,18 +147,31 @@ int commandImport(const CommandLine& line, PatientStatusService& service, std::o
 int commandExport(const CommandLine& line, PatientStatusService& service, std::ostream& out) {
   const std::string format = line.option("--format", "json");
   if (format != "json" && format != "fhir") throw UsageError("--format is json or fhir");
-  const auto examinations = service.store().examinations(line.option("--patient"));
-  const nlohmann::json document = format == "fhir"
-                                      ? examinationsToFhirBundle(examinations, service.model())
-                                      : recordsToJson(examinations);
-  const std::string text = document.dump(2) + "\n";
   const std::string path = line.option("--out");
+  if (!path.empty() && isDatabaseOrCompanion(path, service.config().store.path)) {
+    throw ExchangeError("--out '" + path +
+                        "' is the patient database (or its journal); refusing "
+                        "to overwrite it");
+  }
+  const std::string patient = line.option("--patient");
+  const auto examinations = service.store().examinations(patient);
+  const auto history = service.store().history(patient);
+  nlohmann::json document;
+  if (format == "fhir") {
+    std::set<std::pair<std::string, TimestampUs>> amended;
+    for (const auto& version : history) {
+      amended.emplace(version.examination.patient_id, version.examination.taken_at_us);
+    }
+    document = examinationsToFhirBundle(examinations, service.model(), amended);
+  } else {
+    document = recordsToJson(examinations, history);
+  }
+  const std::string text = document.dump(2) + "\n";
   if (path.empty()) {
     out << text;
     return 0;
   }
-  std::ofstream file(path, std::ios::binary);
-  if (!file || !(file << text)) throw ExchangeError("cannot write '" + path + "'");
+  writePrivateFile(path, text);
   out << "exported " << examinations.size() << " examination(s) to " << path << "\n";
   return 0;
 }
@@ -127,8 +199,15 @@ int commandShow(const CommandLine& line, PatientStatusService& service, std::ost
     return 0;
   }
   const EncodingModel& model = service.model();
-  out << "patient " << patient << ", examination " << formatTimestamp(examination->taken_at)
+  out << "patient " << patient << ", examination " << formatTimestamp(examination->taken_at_us)
       << " (view " << examination->view_id << ", source " << examination->source << ")\n";
+  const std::string incomplete =
+      completeness(examination->status, examination->partial, examination->partial_reason);
+  if (!incomplete.empty()) out << "  " << incomplete << "\n";
+  if (examination->findings.empty()) {
+    out << "  no findings recorded"
+        << (examination->partial ? " (partial: missing findings are unknown)" : "") << "\n";
+  }
   for (const auto& finding : examination->findings) {
     const Category* category = model.config().category(finding.category);
     const Structure* structure = model.anatomy().structure(finding.structure);
@@ -151,7 +230,14 @@ void printStatus(const EncodedStatus& status, std::ostream& out) {
   }
   out << "patient " << status.patient_id << ", examination "
       << formatTimestamp(status.examination_time) << ", view " << status.view_id << "\n";
-  if (status.structures.empty()) out << "  no abnormal findings\n";
+  const std::string incomplete =
+      completeness(status.examination_status, status.partial, status.partial_reason);
+  if (!incomplete.empty()) out << "  " << incomplete << "\n";
+  if (status.structures.empty()) {
+    out << (status.partial ? "  no abnormal findings among what was recorded (partial "
+                             "examination: the rest is unknown)\n"
+                           : "  no abnormal findings\n");
+  }
   for (const auto& entry : status.structures) {
     out << "  " << std::left << std::setw(20) << entry.category << std::setw(44)
         << entry.display_name << hexColor(entry.color) << "  level " << entry.intensity_level << "/"
@@ -179,6 +265,29 @@ int commandEncode(const CommandLine& line, PatientStatusService& service, std::o
     out << toJson(status).dump(2) << "\n";
   } else {
     printStatus(status, out);
+  }
+  return 0;
+}
+
+int commandHistory(const CommandLine& line, PatientStatusService& service, std::ostream& out) {
+  const std::string patient = line.required("--patient");
+  const auto current = service.store().examinations(patient);
+  const auto history = service.store().history(patient);
+  out << "patient " << patient << ": " << current.size() << " examination(s), " << history.size()
+      << " superseded version(s)\n";
+  for (const auto& examination : current) {
+    out << "  " << formatTimestamp(examination.taken_at_us) << "  current     recorded "
+        << formatTimestamp(examination.recorded_at * kMicrosPerSecond) << " from "
+        << examination.source << ", " << examination.findings.size() << " finding(s)\n";
+    for (const auto& version : history) {
+      if (version.examination.taken_at_us != examination.taken_at_us) continue;
+      out << "  " << std::string(formatTimestamp(examination.taken_at_us).size(), ' ')
+          << "  superseded  recorded "
+          << formatTimestamp(version.examination.recorded_at * kMicrosPerSecond) << " from "
+          << version.examination.source << ", " << version.examination.findings.size()
+          << " finding(s); replaced " << formatTimestamp(version.superseded_at * kMicrosPerSecond)
+          << " from " << version.replaced_by_source << "\n";
+    }
   }
   return 0;
 }
@@ -242,6 +351,7 @@ int dispatch(const CommandLine& line, std::ostream& out, std::ostream& err) {
   if (command == "show") return commandShow(line, service, out);
   if (command == "encode") return commandEncode(line, service, out);
   if (command == "check") return commandCheck(service, out);
+  if (command == "history") return commandHistory(line, service, out);
   if (command == "config") return commandConfig(service, out);
   throw UsageError("unknown command '" + command + "'");
 }
@@ -252,15 +362,19 @@ std::string patientCliUsage() {
   return "usage: vicc_patient <command> [options]\n"
          "commands:\n"
          "  init                                  create or migrate the database\n"
-         "  import FILE [--replace] [--skip-unknown]\n"
+         "  import FILE [--replace [--replace-with-empty]] [--skip-unknown]\n"
+         "         [--group-window S] [--max-future S]\n"
          "                                        import our JSON records or a FHIR R4 Bundle\n"
          "  export [--patient P] [--format json|fhir] [--out FILE]\n"
+         "                                        (FILE is written 0600; never the database)\n"
          "  list                                  patients with examination counts\n"
          "  dates --patient P                     examination dates, oldest first\n"
          "  show --patient P [--date D]           recorded findings at or before D\n"
          "  encode --patient P [--date D] [--json] [--hide CAT,...]\n"
          "                                        visually encoded status at or before D\n"
-         "  record FILE [--replace]               record one examination\n"
+         "  record FILE [--replace [--replace-with-empty]]\n"
+         "                                        record one examination\n"
+         "  history --patient P                   examinations and their superseded versions\n"
          "  check                                 database integrity check\n"
          "  config                                the view's encoding and its reports\n"
          "options for all commands:\n"
@@ -269,7 +383,17 @@ std::string patientCliUsage() {
          "  --anatomy FILE     anatomy catalogue (default: the package's)\n"
          "  --view ID          view (default neurological_status_sdh)\n"
          "  --busy-timeout MS  wait for a locked database (default 5000)\n"
-         "dates: YYYY-MM-DD (the end of that day) or YYYY-MM-DDTHH:MM[:SS][Z|+HH:MM]\n";
+         "import options:\n"
+         "  --replace           an examination at a recorded time replaces it; the old version\n"
+         "                      is kept as history (see history)\n"
+         "  --replace-with-empty  also when the new examination has no findings\n"
+         "  --skip-unknown      import what is known; the examination is stored as PARTIAL\n"
+         "  --group-window S    FHIR observations naming no examination group per patient\n"
+         "                      within S seconds (default 600)\n"
+         "  --max-future S      reject examination times more than S s ahead (default 86400)\n"
+         "read commands (list, dates, show, encode, export, history, check) open the\n"
+         "database read-only and never create it.\n"
+         "dates: YYYY-MM-DD (the end of that day) or YYYY-MM-DDTHH:MM[:SS[.ffffff]][Z|+HH:MM]\n";
 }
 
 int runPatientCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {

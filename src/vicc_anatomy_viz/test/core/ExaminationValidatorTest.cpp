@@ -15,7 +15,7 @@ using test::shippedModel;
 Examination examinationOf(std::vector<Finding> findings, std::string patient = "SDH-900") {
   Examination examination;
   examination.patient_id = std::move(patient);
-  examination.taken_at = 1700000000;  // 2023-11-14T22:13:20Z
+  examination.taken_at_us = 1700000000 * kMicrosPerSecond;  // 2023-11-14T22:13:20Z
   examination.findings = std::move(findings);
   return examination;
 }
@@ -44,18 +44,18 @@ TEST(ExaminationValidatorTest, SampleRecordsAreValid) {
 TEST(ExaminationValidatorTest, ValueOutsideTheDomainIsNamed) {
   expectSingleProblem(
       finding("radicular_pain", "dermatome_L5", Side::kLeft, {{"intensity", Value::number(11)}}),
-      "(radicular_pain on dermatome_L5 left): property 'intensity': value 11 is outside the "
+      "(radicular_pain on dermatome_L5 left): property 'intensity': the value is outside the "
       "domain 0..10");
   expectSingleProblem(finding("paresis", "tibialis_anterior", Side::kRight,
                               {{"muscle_strength", Value::number(6)}}),
-                      "property 'muscle_strength': value 6 is outside the domain 0..5");
+                      "property 'muscle_strength': the value is outside the domain 0..5");
   expectSingleProblem(finding("radicular_pain", "dermatome_L5", Side::kLeft,
                               {{"trigger", Value::label("sometimes")}}),
-                      "property 'trigger': value sometimes is outside the domain {constant, "
+                      "property 'trigger': the value is outside the domain {constant, "
                       "stress}");
   expectSingleProblem(
       finding("t_reflex", "patellar_ligament", Side::kLeft, {{"intensity", Value::label("weak")}}),
-      "property 'intensity': 'weak' is not a number (domain 1..5)");
+      "property 'intensity': the value is not a number (domain 1..5)");
 }
 
 TEST(ExaminationValidatorTest, UnknownOrMismatchedStructuresAreNamed) {
@@ -95,7 +95,7 @@ TEST(ExaminationValidatorTest, DerivedValueMustAgreeWithItsSource) {
   expectSingleProblem(
       finding("paresis", "tibialis_anterior", Side::kRight,
               {{"muscle_strength", Value::number(3)}, {"intensity", Value::label("mild")}}),
-      "property 'intensity': 'mild' contradicts muscle_strength 3 (which gives 'moderate')");
+      "property 'intensity' contradicts the recorded muscle_strength (from which it is derived)");
   EXPECT_TRUE(problemsOf(examinationOf({finding("paresis", "tibialis_anterior", Side::kRight,
                                                 {{"muscle_strength", Value::number(3)},
                                                  {"intensity", Value::label("moderate")}})}))

@@ -90,7 +90,7 @@ TEST(RecordStoreTest, ExaminationsRoundTripExactly) {
   const auto loaded = store.examinations("SDH-046");
   ASSERT_EQ(loaded.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {
-    EXPECT_EQ(loaded[i].taken_at, figure[i].taken_at);
+    EXPECT_EQ(loaded[i].taken_at_us, figure[i].taken_at_us);
     EXPECT_EQ(loaded[i].view_id, "neurological_status_sdh");
     EXPECT_EQ(loaded[i].source, "json");
     auto expected = figure[i].findings;
@@ -107,7 +107,7 @@ TEST(RecordStoreTest, ExaminationsRoundTripExactly) {
   EXPECT_EQ(patients[0].examination_count, 2u);
   EXPECT_EQ(formatTimestamp(patients[0].first_examination), "2023-03-06T09:15:00Z");
   EXPECT_EQ(store.examinationTimes("SDH-046"),
-            (std::vector<std::int64_t>{figure[0].taken_at, figure[1].taken_at}));
+            (std::vector<TimestampUs>{figure[0].taken_at_us, figure[1].taken_at_us}));
 }
 
 TEST(RecordStoreTest, StatusAtADateIsTheExaminationAtOrBeforeIt) {
@@ -115,15 +115,17 @@ TEST(RecordStoreTest, StatusAtADateIsTheExaminationAtOrBeforeIt) {
   RecordStore store(storeAt(dir.file("p.db")));
   store.write(validated(figurePatient()));
   EXPECT_FALSE(store.examinationAtOrBefore("SDH-046", *parseUpperBound("2023-03-05")).has_value());
-  EXPECT_EQ(formatTimestamp(
-                store.examinationAtOrBefore("SDH-046", *parseUpperBound("2023-03-06"))->taken_at),
-            "2023-03-06T09:15:00Z");
-  EXPECT_EQ(formatTimestamp(
-                store.examinationAtOrBefore("SDH-046", *parseUpperBound("2023-03-09"))->taken_at),
-            "2023-03-06T09:15:00Z");
+  EXPECT_EQ(
+      formatTimestamp(
+          store.examinationAtOrBefore("SDH-046", *parseUpperBound("2023-03-06"))->taken_at_us),
+      "2023-03-06T09:15:00Z");
+  EXPECT_EQ(
+      formatTimestamp(
+          store.examinationAtOrBefore("SDH-046", *parseUpperBound("2023-03-09"))->taken_at_us),
+      "2023-03-06T09:15:00Z");
   EXPECT_EQ(formatTimestamp(
                 store.examinationAtOrBefore("SDH-046", *parseUpperBound("2023-03-10T08:40:00Z"))
-                    ->taken_at),
+                    ->taken_at_us),
             "2023-03-10T08:40:00Z");
   std::string message;
   EXPECT_EQ(storeErrorKind([&] { store.examinationAtOrBefore("SDH-999", 0); }, &message),
@@ -146,8 +148,8 @@ TEST(RecordStoreTest, ABatchWithOneBadValueWritesNothing) {
   } catch (const ValidationError& e) {
     EXPECT_NE(std::string(e.what()).find("patient SDH-105, examination 2024-05-27T08:30:00Z, "
                                          "finding 1 (radicular_pain on dermatome_C7 left): "
-                                         "property 'intensity': value 11 is outside the domain "
-                                         "0..10"),
+                                         "property 'intensity': the value is outside the "
+                                         "domain 0..10"),
               std::string::npos)
         << e.what();
   }
@@ -243,7 +245,7 @@ TEST(RecordStoreTest, NewerSchemaIsRefused) {
   std::string message;
   EXPECT_EQ(storeErrorKind([&] { RecordStore store(storeAt(path)); }, &message),
             StoreError::Kind::kNewerSchema);
-  EXPECT_NE(message.find("schema version 99, newer than this program's 2"), std::string::npos);
+  EXPECT_NE(message.find("schema version 99, newer than this program's 3"), std::string::npos);
 }
 
 TEST(RecordStoreTest, Version1DatabaseIsMigratedWithItsData) {
@@ -263,10 +265,15 @@ TEST(RecordStoreTest, Version1DatabaseIsMigratedWithItsData) {
     EXPECT_EQ(connection.queryInt("PRAGMA user_version"), 1);
   }
   RecordStore store(storeAt(path));
-  EXPECT_EQ(store.schemaVersion(), 2);
-  const auto examination = store.examinationAtOrBefore("SDH-001", 1678094100);
+  EXPECT_EQ(store.schemaVersion(), 3);
+  // Version 3 keeps times in microseconds: the seconds of version 1 are converted.
+  EXPECT_FALSE(store.examinationAtOrBefore("SDH-001", 1678094100 * kMicrosPerSecond - 1));
+  const auto examination = store.examinationAtOrBefore("SDH-001", 1678094100 * kMicrosPerSecond);
   ASSERT_TRUE(examination.has_value());
+  EXPECT_EQ(formatTimestamp(examination->taken_at_us), "2023-03-06T09:15:00Z");
   EXPECT_EQ(examination->source, "unknown");
+  EXPECT_EQ(examination->status, ExaminationStatus::kFinal);
+  EXPECT_FALSE(examination->partial);
   ASSERT_EQ(examination->findings.size(), 1u);
   EXPECT_EQ(examination->findings[0].values.at("intensity"), Value::number(8));
 }

@@ -28,7 +28,7 @@ EncodedStatus encode(const Examination& examination, std::vector<std::string> hi
 Examination examinationOf(std::vector<Finding> findings) {
   Examination examination;
   examination.patient_id = "TEST-1";
-  examination.taken_at = 1700000000;
+  examination.taken_at_us = 1700000000 * kMicrosPerSecond;
   examination.findings = std::move(findings);
   return examination;
 }

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include <ros/ros.h>
+#include <rosgraph_msgs/Log.h>
 #include <vicc_msgs/EncodedStatus.h>
 #include <vicc_msgs/GetEncodedStatus.h>
 #include <vicc_msgs/ListExaminationDates.h>
@@ -33,7 +34,7 @@ std::vector<vicc_anatomy_viz::Examination> figurePatient() {
 vicc_msgs::RecordExamination::Request recordRequest(const vicc_anatomy_viz::Examination& exam) {
   vicc_msgs::RecordExamination::Request request;
   request.patient_id = exam.patient_id;
-  request.taken_at = vicc_anatomy_viz::formatTimestamp(exam.taken_at);
+  request.taken_at = vicc_anatomy_viz::formatTimestamp(exam.taken_at_us);
   for (const auto& finding : exam.findings) {
     vicc_msgs::Finding msg;
     msg.category = finding.category;
@@ -93,13 +94,30 @@ TEST_F(PatientStatusServerTest, RecordsValidExaminationsAndRejectsInvalidOnesWho
         call<vicc_msgs::RecordExamination>("record_examination", recordRequest(exam));
     EXPECT_TRUE(response.success) << response.message;
   }
+  // Everything the server logs, to prove that a rejected value never reaches rosout.log.
+  std::vector<std::string> logged;
+  ros::NodeHandle nh;
+  const ros::Subscriber rosout = nh.subscribe<rosgraph_msgs::Log>(
+      "/rosout", 100, [&](const rosgraph_msgs::Log::ConstPtr& log) {
+        if (log->name == "/patient_status_server") logged.push_back(log->msg);
+      });
+  waitFor([&] { return rosout.getNumPublishers() > 0; });
   auto bad = recordRequest(figure[0]);
   bad.taken_at = "2023-03-20T10:00:00Z";
-  bad.findings[0].values[0].value = "11";  // pain intensity 11 of 0..10
+  bad.findings[0].values[0].value = "4711";  // pain intensity far outside 0..10
   auto response = call<vicc_msgs::RecordExamination>("record_examination", bad);
   EXPECT_FALSE(response.success);
-  EXPECT_NE(response.message.find("value 11 is outside the domain 0..10"), std::string::npos)
+  EXPECT_NE(response.message.find("property 'intensity': the value is outside the domain 0..10"),
+            std::string::npos)
       << response.message;
+  EXPECT_EQ(response.message.find("4711"), std::string::npos) << response.message;
+  ASSERT_TRUE(waitFor([&] {
+    for (const auto& line : logged) {
+      if (line.find("record_examination failed") != std::string::npos) return true;
+    }
+    return false;
+  })) << "the rejection was not logged";
+  for (const auto& line : logged) EXPECT_EQ(line.find("4711"), std::string::npos) << line;
   bad = recordRequest(figure[0]);
   bad.taken_at = "2023-03-21T10:00:00Z";
   bad.findings[1].structure_id = "dermatome_L9";

@@ -37,14 +37,16 @@ class PatientCliTest : public ::testing::Test {
 TEST_F(PatientCliTest, InitImportListDatesShow) {
   Result r = run({"init"});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("schema version 2"), std::string::npos);
+  EXPECT_NE(r.out.find("schema version 3"), std::string::npos);
   r = run({"import", sample("fig4_6_patient.json")});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("imported 2 examination(s) of 1 patient(s)"), std::string::npos);
   ASSERT_EQ(run({"import", sample("cases.json")}).code, 0);
   r = run({"import", sample("fhir/hospital_feed_bundle.json")});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.err.find("warning: entry 0: Patient resource ignored"), std::string::npos);
+  EXPECT_NE(r.err.find("hospital_feed_bundle.json: entry 0: Patient resource ignored"),
+            std::string::npos)
+      << r.err;
 
   r = run({"list"});
   ASSERT_EQ(r.code, 0);
@@ -117,9 +119,16 @@ TEST_F(PatientCliTest, BadInputFailsClearlyAndWritesNothing) {
        "values": {"intensity": 6}}]}]}]})");
   Result r = run({"import", bad});
   EXPECT_EQ(r.code, 1);
-  EXPECT_NE(r.err.find("value 6 is outside the domain 1..5"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the value is outside the domain 1..5"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("6"), std::string::npos) << "the rejected value is echoed: " << r.err;
   EXPECT_EQ(run({"list"}).out.find("SDH-300"), std::string::npos);
 
+  // Nothing was written, so there is no database, and a read does not create one.
+  r = run({"encode", "--patient", "SDH-999"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(db_)) << "a read command created the database";
+  ASSERT_EQ(run({"init"}).code, 0);
   r = run({"encode", "--patient", "SDH-999"});
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("unknown patient 'SDH-999'"), std::string::npos);

@@ -14,6 +14,8 @@
 
 namespace vicc_anatomy_viz::ros_adapter {
 
+/// The ROS time of an examination; zero outside ros::Time's range (1970..2106).
+ros::Time rosTime(TimestampUs time);
 vicc_msgs::EncodedStatus toMessage(const EncodedStatus& status);
 vicc_msgs::PatientSummary toMessage(const PatientSummary& summary);
 
