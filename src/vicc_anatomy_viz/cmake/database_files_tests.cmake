@@ -7,3 +7,9 @@ target_compile_options(vicc_anatomy_viz_database_files_test PRIVATE ${VICC_WARNI
 target_compile_definitions(vicc_anatomy_viz_database_files_test PRIVATE ${VICC_TEST_DEFINITIONS})
 target_link_libraries(vicc_anatomy_viz_database_files_test vicc_anatomy_viz_core gtest_main
   pthread)
+
+# Timing of PRAGMA synchronous FULL against NORMAL for bench/patient_status/durability.md
+# (not a test; built with the tests so that it stays out of the installed tools).
+add_executable(vicc_durability_bench src/tools/vicc_durability_bench.cpp)
+target_compile_options(vicc_durability_bench PRIVATE ${VICC_WARNINGS})
+target_link_libraries(vicc_durability_bench vicc_anatomy_viz_core)

@@ -75,7 +75,7 @@ RecordStore::RecordStore(const StoreConfig& config) : config_(config) {
   checkDatabaseIdentity(*connection_);
   connection_->exec("PRAGMA journal_mode = WAL");
   connection_->exec("PRAGMA foreign_keys = ON");
-  connection_->exec("PRAGMA synchronous = NORMAL");
+  connection_->exec("PRAGMA synchronous = FULL");  // commits survive power loss (durability.md)
   migrateSchema(*connection_);
   find_patient_ = std::make_unique<SqliteStatement>(*connection_,
                                                     "SELECT id FROM patients WHERE pseudonym = ?");
