@@ -40,7 +40,26 @@ class SqliteStatement {
 
 class SqliteConnection {
  public:
-  /// Opens (and with `create` creates) the file; waits up to `busy_timeout_ms` on locks.
+  enum class OpenMode {
+    /// Creates a missing file first (mode 0600, missing parent directories 0700), then opens
+    /// it read-write.
+    kCreateReadWrite,
+    /// The file must exist (else StoreError kNotFound); read-write.
+    kReadWrite,
+    /// The file must exist (else StoreError kNotFound, and nothing is created); writes fail.
+    /// A WAL-mode database normally needs its -shm (and -wal) file, which SQLite creates in
+    /// the database's directory. When that directory is not writable and no -wal or -journal
+    /// holds changes, the file is opened as immutable (URI parameter immutable=1): SQLite then
+    /// takes no locks and assumes nobody changes the file while it is open, so a writer that
+    /// appears later (through another mount or user) is not seen. With changes pending in a
+    /// -wal or -journal file that cannot be read that way, the open is refused (StoreError
+    /// kIo) instead of answering from stale data.
+    kReadOnly,
+  };
+
+  /// Opens `path` as `mode` says; waits up to `busy_timeout_ms` on locks.
+  SqliteConnection(const std::string& path, int busy_timeout_ms, OpenMode mode);
+  /// OpenMode::kCreateReadWrite when `create`, else OpenMode::kReadWrite.
   SqliteConnection(const std::string& path, int busy_timeout_ms, bool create);
   ~SqliteConnection();
   SqliteConnection(const SqliteConnection&) = delete;
@@ -53,14 +72,23 @@ class SqliteConnection {
   std::int64_t lastInsertRowid() const;
   const std::string& path() const { return path_; }
   int busyTimeoutMs() const { return busy_timeout_ms_; }
+  bool readOnly() const { return mode_ == OpenMode::kReadOnly; }
+  /// true when a read-only connection fell back to immutable=1 (see OpenMode::kReadOnly).
+  bool immutable() const { return immutable_; }
   sqlite3* handle() { return db_; }
 
   /// Throws the StoreError matching an sqlite result code.
   [[noreturn]] void fail(int result_code, const std::string& doing) const;
 
  private:
+  /// sqlite3_open_v2 of `filename` (the path or a URI); StoreError when that fails.
+  void openHandle(const std::string& filename, int flags);
+  void openReadOnly();
+
   std::string path_;
   int busy_timeout_ms_;
+  OpenMode mode_;
+  bool immutable_ = false;
   sqlite3* db_ = nullptr;
 };
 

@@ -118,7 +118,7 @@ void RecordStore::openForWriting() {
   checkDatabaseIdentity(*connection_);
   connection_->exec("PRAGMA journal_mode = WAL");
   connection_->exec("PRAGMA foreign_keys = ON");
-  connection_->exec("PRAGMA synchronous = NORMAL");
+  connection_->exec("PRAGMA synchronous = FULL");  // commits survive power loss (durability.md)
   migrateSchema(*connection_);
 }
 

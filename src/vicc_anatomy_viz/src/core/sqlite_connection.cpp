@@ -2,6 +2,9 @@
 
 #include <sqlite3.h>
 
+#include <filesystem>
+
+#include "vicc_anatomy_viz/database_files.hpp"
 #include "vicc_anatomy_viz/errors.hpp"
 
 namespace vicc_anatomy_viz {
@@ -29,22 +32,98 @@ StoreError::Kind kindOf(int result_code) {
   }
 }
 
+/// `file:` URI of a path with immutable=1; characters with a meaning in URIs are escaped.
+std::string immutableUri(const std::string& path) {
+  const std::string absolute = std::filesystem::absolute(path).string();
+  std::string uri = "file://";
+  for (const unsigned char c : absolute) {
+    if (c == '%' || c == '?' || c == '#' || c < 0x21 || c > 0x7e) {
+      static const char kHex[] = "0123456789abcdef";
+      uri += '%';
+      uri += kHex[c >> 4];
+      uri += kHex[c & 0xf];
+    } else {
+      uri += static_cast<char>(c);
+    }
+  }
+  return uri + "?immutable=1";
+}
+
+/// true when a -wal or -journal file next to the database is not empty.
+bool hasPendingChanges(const std::string& path) {
+  for (const char* suffix : {"-wal", "-journal"}) {
+    std::error_code error;
+    const auto size = std::filesystem::file_size(path + suffix, error);
+    if (error == std::errc::no_such_file_or_directory) continue;
+    // A file that cannot even be measured may hold changes too.
+    if (error || size > 0) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
+SqliteConnection::SqliteConnection(const std::string& path, int busy_timeout_ms, OpenMode mode)
+    : path_(path), busy_timeout_ms_(busy_timeout_ms), mode_(mode) {
+  if (mode == OpenMode::kCreateReadWrite) {
+    // We create the file so that it is private from the start; SQLite would use 0644.
+    createPrivateDatabaseFile(path);
+  } else if (std::error_code ignored; !std::filesystem::exists(path, ignored)) {
+    throw StoreError(StoreError::Kind::kNotFound, "patient database '" + path + "' does not exist");
+  }
+  if (mode != OpenMode::kReadOnly) {
+    openHandle(path, SQLITE_OPEN_READWRITE);
+    return;
+  }
+  try {
+    openReadOnly();
+  } catch (...) {
+    // The destructor does not run for a throwing constructor.
+    sqlite3_close_v2(db_);
+    db_ = nullptr;
+    throw;
+  }
+}
+
 SqliteConnection::SqliteConnection(const std::string& path, int busy_timeout_ms, bool create)
-    : path_(path), busy_timeout_ms_(busy_timeout_ms) {
-  const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_NOMUTEX;
-  const int rc = sqlite3_open_v2(path.c_str(), &db_, flags, nullptr);
+    : SqliteConnection(path, busy_timeout_ms,
+                       create ? OpenMode::kCreateReadWrite : OpenMode::kReadWrite) {}
+
+void SqliteConnection::openHandle(const std::string& filename, int flags) {
+  const int rc = sqlite3_open_v2(filename.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr);
   if (rc != SQLITE_OK) {
     const std::string detail = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
     sqlite3_close(db_);
     db_ = nullptr;
-    throw StoreError(kindOf(rc), "cannot open patient database '" + path + "': " + detail);
+    throw StoreError(kindOf(rc), "cannot open patient database '" + path_ + "': " + detail);
   }
   sqlite3_extended_result_codes(db_, 1);
   // The busy handler retries a locked database until the timeout (another writer, or a
   // checkpoint in progress) instead of failing at once.
-  sqlite3_busy_timeout(db_, busy_timeout_ms);
+  sqlite3_busy_timeout(db_, busy_timeout_ms_);
+}
+
+void SqliteConnection::openReadOnly() {
+  openHandle(path_, SQLITE_OPEN_READONLY);
+  // SQLite opens the -wal and -shm files at the first read, so only a read shows whether
+  // they can be used here.
+  const int rc = sqlite3_exec(db_, "SELECT count(*) FROM sqlite_master", nullptr, nullptr, nullptr);
+  if (rc == SQLITE_OK) return;
+  const int primary = rc & 0xff;
+  if (primary != SQLITE_CANTOPEN && primary != SQLITE_READONLY) fail(rc, "reading the schema");
+  if (hasPendingChanges(path_)) {
+    // immutable=1 would ignore those changes and show an outdated record.
+    throw StoreError(StoreError::Kind::kIo,
+                     "patient database '" + path_ +
+                         "' cannot be read here: its -wal or -journal file holds changes not yet "
+                         "in the database file, and SQLite cannot create the -shm file it needs "
+                         "to read them (the directory is not writable); open it once with write "
+                         "access, or copy the database with its -wal file to a writable place");
+  }
+  sqlite3_close_v2(db_);
+  db_ = nullptr;
+  openHandle(immutableUri(path_), SQLITE_OPEN_READONLY | SQLITE_OPEN_URI);
+  immutable_ = true;
 }
 
 SqliteConnection::~SqliteConnection() { sqlite3_close_v2(db_); }
