@@ -33,3 +33,4 @@ target_compile_definitions(patient_status_server_rostest PRIVATE ${VICC_TEST_DEF
 target_link_libraries(patient_status_server_rostest vicc_anatomy_viz_ros ${catkin_LIBRARIES})
 add_dependencies(patient_status_server_rostest patient_status_server)
 include(cmake/database_files_tests.cmake)
+include(cmake/fhir_conformance.cmake)
