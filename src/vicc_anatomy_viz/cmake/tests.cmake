@@ -15,6 +15,7 @@ catkin_add_gtest(vicc_anatomy_viz_encoding_test
 catkin_add_gtest(vicc_anatomy_viz_store_test test/core/RecordStoreTest.cpp)
 catkin_add_gtest(vicc_anatomy_viz_exchange_test
   test/core/FhirBundleTest.cpp
+  test/core/FhirImportSafetyTest.cpp
   test/core/RecordJsonTest.cpp)
 catkin_add_gtest(vicc_anatomy_viz_cli_test test/tools/PatientCliTest.cpp)
 

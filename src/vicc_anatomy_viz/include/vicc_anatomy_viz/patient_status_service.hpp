@@ -41,6 +41,7 @@ class PatientStatusService {
 
   /// The store, opened on demand (StoreError when the file is locked, corrupt or foreign).
   RecordStore& store();
+  bool storeIsOpen() const { return store_ != nullptr; }
 
   std::vector<PatientSummary> listPatients();
   std::vector<TimestampUs> examinationDates(const std::string& patient_id);

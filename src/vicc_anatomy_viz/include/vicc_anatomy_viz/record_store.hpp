@@ -42,6 +42,14 @@ class RecordStore {
   ~RecordStore();
 
   int schemaVersion();
+  /// PRAGMA synchronous of the connection (2 = FULL: a reported write survives power loss).
+  int synchronousSetting();
+  /// What deserves attention about the files (e.g. readable by other users), found at open.
+  const std::vector<std::string>& warnings() const { return warnings_; }
+  /// Online backup into a new private file (see database_files.hpp).
+  void backupTo(const std::string& out_path);
+  /// Replaces the whole record by a backup (see database_files.hpp).
+  void restoreFrom(const std::string& backup_path);
   const std::string& path() const { return config_.path; }
 
   std::vector<PatientSummary> listPatients();
@@ -76,6 +84,7 @@ class RecordStore {
                          std::int64_t now);
 
   StoreConfig config_;
+  std::vector<std::string> warnings_;
   std::unique_ptr<SqliteConnection> connection_;
   std::unique_ptr<SqliteStatement> find_patient_;
   std::unique_ptr<SqliteStatement> at_or_before_;

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "vicc_anatomy_viz/database_files.hpp"
 #include "vicc_anatomy_viz/errors.hpp"
 #include "vicc_anatomy_viz/record_json.hpp"
 #include "vicc_anatomy_viz/schema_migrations.hpp"
@@ -25,17 +26,6 @@ class ResetOnExit {
  private:
   SqliteStatement& statement_;
 };
-
-void createParentDirectory(const std::string& path) {
-  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (parent.empty()) return;
-  std::error_code error;
-  std::filesystem::create_directories(parent, error);
-  if (error) {
-    throw StoreError(StoreError::Kind::kIo, "cannot create directory '" + parent.string() +
-                                                "' for the patient database: " + error.message());
-  }
-}
 
 Value readValue(const SqliteStatement& statement, int int_column, int text_column) {
   if (!statement.columnIsNull(int_column)) {
@@ -111,8 +101,10 @@ RecordStore::RecordStore(const StoreConfig& config) : config_(config) {
 }
 
 void RecordStore::openForWriting() {
-  createParentDirectory(config_.path);
-  connection_ = std::make_unique<SqliteConnection>(config_.path, config_.busy_timeout_ms, true);
+  // Created 0600 in 0700 directories: the file holds every pseudonym and value.
+  connection_ = std::make_unique<SqliteConnection>(config_.path, config_.busy_timeout_ms,
+                                                   SqliteConnection::OpenMode::kCreateReadWrite);
+  warnings_ = permissionWarnings(config_.path);
   // Identify the file before changing anything in it: another application's database is
   // left exactly as it was.
   checkDatabaseIdentity(*connection_);
@@ -123,12 +115,10 @@ void RecordStore::openForWriting() {
 }
 
 void RecordStore::openReadOnly() {
-  std::error_code error;
-  if (!std::filesystem::exists(config_.path, error)) {
-    throw StoreError(StoreError::Kind::kNotFound,
-                     "patient database '" + config_.path + "' does not exist");
-  }
-  connection_ = std::make_unique<SqliteConnection>(config_.path, config_.busy_timeout_ms, false);
+  // A missing file is reported (StoreError kNotFound), never created.
+  connection_ = std::make_unique<SqliteConnection>(config_.path, config_.busy_timeout_ms,
+                                                   SqliteConnection::OpenMode::kReadOnly);
+  warnings_ = permissionWarnings(config_.path);
   checkDatabaseIdentity(*connection_);
   const std::int64_t version = connection_->queryInt("PRAGMA user_version");
   if (version < latestSchemaVersion()) {
@@ -150,6 +140,20 @@ RecordStore::~RecordStore() {
 
 int RecordStore::schemaVersion() {
   return static_cast<int>(connection_->queryInt("PRAGMA user_version"));
+}
+
+int RecordStore::synchronousSetting() {
+  return static_cast<int>(connection_->queryInt("PRAGMA synchronous"));
+}
+
+void RecordStore::backupTo(const std::string& out_path) { backupDatabase(*connection_, out_path); }
+
+void RecordStore::restoreFrom(const std::string& backup_path) {
+  if (config_.read_only) {
+    throw StoreError(StoreError::Kind::kIo,
+                     "patient database '" + config_.path + "' is open read-only");
+  }
+  restoreDatabase(backup_path, *connection_);
 }
 
 std::int64_t RecordStore::patientRowId(const std::string& patient_id, bool create) {

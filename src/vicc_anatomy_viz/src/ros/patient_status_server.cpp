@@ -64,9 +64,12 @@ PatientStatusServer::PatientStatusServer(ros::NodeHandle& nh, ros::NodeHandle& p
 
   // The database is opened now to report problems early; requests retry a failed open.
   try {
-    service_->store();
+    RecordStore& store = service_->store();
     ROS_INFO("patient_status_server: database %s, view %s", service_->config().store.path.c_str(),
              service_->config().view_id.c_str());
+    for (const auto& warning : store.warnings()) {
+      ROS_WARN("patient_status_server: %s", warning.c_str());
+    }
   } catch (const std::exception& e) {
     ROS_ERROR("patient_status_server: %s (requests will retry)", e.what());
   }

@@ -4,10 +4,11 @@
 
 namespace vicc_anatomy_viz::cli {
 
-const std::set<std::string> kCommands = {"init",   "import", "export", "list",   "dates",  "show",
-                                         "encode", "record", "check",  "config", "history"};
-const std::set<std::string> kReadCommands = {"export", "list",  "dates",  "show",
-                                             "encode", "check", "history"};
+const std::set<std::string> kCommands = {"init",    "import", "export", "list",  "dates",
+                                         "show",    "encode", "record", "check", "config",
+                                         "history", "backup", "restore"};
+const std::set<std::string> kReadCommands = {"export", "list",  "dates",   "show",
+                                             "encode", "check", "history", "backup"};
 
 namespace {
 const std::set<std::string> kFlags = {"--json",         "--replace", "--replace-with-empty",

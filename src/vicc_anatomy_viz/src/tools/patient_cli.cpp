@@ -7,7 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
+#include <ctime>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "cli_command_line.hpp"
+#include "vicc_anatomy_viz/database_files.hpp"
 #include "vicc_anatomy_viz/encoded_status_json.hpp"
 #include "vicc_anatomy_viz/errors.hpp"
 #include "vicc_anatomy_viz/fhir_bundle.hpp"
@@ -39,22 +40,6 @@ PatientStatusConfig serviceConfig(const CommandLine& line) {
   config.store.busy_timeout_ms = line.integerOption("--busy-timeout", 5000);
   config.store.read_only = cli::kReadCommands.count(line.command) > 0;
   return config;
-}
-
-/// Whether an output path is the database or one of its journals (also through links).
-bool isDatabaseOrCompanion(const std::string& candidate, const std::string& db_path) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  const fs::path target = fs::weakly_canonical(candidate, error);
-  for (const char* suffix : {"", "-wal", "-shm", "-journal"}) {
-    const fs::path companion = db_path + suffix;
-    if (fs::exists(companion, error) && fs::exists(candidate, error) &&
-        fs::equivalent(companion, candidate, error)) {
-      return true;
-    }
-    if (fs::weakly_canonical(companion, error) == target) return true;
-  }
-  return false;
 }
 
 /// Writes patient data as a private file (0600), atomically: a failed write leaves any
@@ -292,6 +277,29 @@ int commandHistory(const CommandLine& line, PatientStatusService& service, std::
   return 0;
 }
 
+int commandBackup(const CommandLine& line, PatientStatusService& service, std::ostream& out) {
+  line.expectPositional(0);
+  const std::string path = line.required("--out");
+  service.store().backupTo(path);
+  out << "backed up " << service.config().store.path << " to " << path << " (mode 0600)\n";
+  return 0;
+}
+
+/// Replaces the record by a backup; the current record is kept as a backup of its own first,
+/// so that a restore of the wrong file can be undone.
+int commandRestore(const CommandLine& line, PatientStatusService& service, std::ostream& out) {
+  line.expectPositional(1);
+  const std::string& backup = line.positional.front();
+  RecordStore& store = service.store();
+  const std::string safety = store.path() + ".before-restore-" +
+                             std::to_string(static_cast<long long>(std::time(nullptr)));
+  store.backupTo(safety);
+  store.restoreFrom(backup);
+  out << "restored " << store.path() << " from " << backup << "; the previous record is kept in "
+      << safety << "\n";
+  return 0;
+}
+
 int commandCheck(PatientStatusService& service, std::ostream& out) {
   RecordStore& store = service.store();
   const auto rows = store.integrityCheck();
@@ -328,8 +336,20 @@ int commandConfig(PatientStatusService& service, std::ostream& out) {
   return 0;
 }
 
+/// Says what is wrong with the database files (e.g. readable by others) whenever a command
+/// opened them, also when the command failed.
+struct StoreWarningsOnExit {
+  PatientStatusService& service;
+  std::ostream& err;
+  ~StoreWarningsOnExit() {
+    if (!service.storeIsOpen()) return;
+    for (const auto& warning : service.store().warnings()) err << "warning: " << warning << "\n";
+  }
+};
+
 int dispatch(const CommandLine& line, std::ostream& out, std::ostream& err) {
   PatientStatusService service(serviceConfig(line));
+  const StoreWarningsOnExit warn_about_files{service, err};
   const std::string& command = line.command;
   if (command == "init") {
     line.expectPositional(0);
@@ -352,6 +372,8 @@ int dispatch(const CommandLine& line, std::ostream& out, std::ostream& err) {
   if (command == "encode") return commandEncode(line, service, out);
   if (command == "check") return commandCheck(service, out);
   if (command == "history") return commandHistory(line, service, out);
+  if (command == "backup") return commandBackup(line, service, out);
+  if (command == "restore") return commandRestore(line, service, out);
   if (command == "config") return commandConfig(service, out);
   throw UsageError("unknown command '" + command + "'");
 }
@@ -376,6 +398,9 @@ std::string patientCliUsage() {
          "                                        record one examination\n"
          "  history --patient P                   examinations and their superseded versions\n"
          "  check                                 database integrity check\n"
+         "  backup --out FILE                     consistent copy (online, 0600)\n"
+         "  restore FILE                          replace the record by a backup (the current\n"
+         "                                        one is first saved next to the database)\n"
          "  config                                the view's encoding and its reports\n"
          "options for all commands:\n"
          "  --db FILE          patient database (default ~/.ros/vicc/patients.db)\n"
@@ -391,7 +416,7 @@ std::string patientCliUsage() {
          "  --group-window S    FHIR observations naming no examination group per patient\n"
          "                      within S seconds (default 600)\n"
          "  --max-future S      reject examination times more than S s ahead (default 86400)\n"
-         "read commands (list, dates, show, encode, export, history, check) open the\n"
+         "read commands (list, dates, show, encode, export, history, check, backup) open the\n"
          "database read-only and never create it.\n"
          "dates: YYYY-MM-DD (the end of that day) or YYYY-MM-DDTHH:MM[:SS[.ffffff]][Z|+HH:MM]\n";
 }

@@ -94,14 +94,18 @@ TEST_F(PatientStatusServerTest, RecordsValidExaminationsAndRejectsInvalidOnesWho
         call<vicc_msgs::RecordExamination>("record_examination", recordRequest(exam));
     EXPECT_TRUE(response.success) << response.message;
   }
-  // Everything the server logs, to prove that a rejected value never reaches rosout.log.
+  // Everything the server logs (what rosout writes into rosout.log), to prove that a rejected
+  // value never reaches the log. Read from /rosout: rostest runs no rosout aggregator here.
   std::vector<std::string> logged;
+  std::vector<std::string> senders;
   ros::NodeHandle nh;
   const ros::Subscriber rosout = nh.subscribe<rosgraph_msgs::Log>(
       "/rosout", 100, [&](const rosgraph_msgs::Log::ConstPtr& log) {
+        senders.push_back(log->name);
         if (log->name == "/patient_status_server") logged.push_back(log->msg);
       });
-  waitFor([&] { return rosout.getNumPublishers() > 0; });
+  // This node publishes /rosout too: wait for the server's connection as well.
+  ASSERT_TRUE(waitFor([&] { return rosout.getNumPublishers() >= 2; }));
   auto bad = recordRequest(figure[0]);
   bad.taken_at = "2023-03-20T10:00:00Z";
   bad.findings[0].values[0].value = "4711";  // pain intensity far outside 0..10
@@ -116,7 +120,9 @@ TEST_F(PatientStatusServerTest, RecordsValidExaminationsAndRejectsInvalidOnesWho
       if (line.find("record_examination failed") != std::string::npos) return true;
     }
     return false;
-  })) << "the rejection was not logged";
+  })) << "the rejection was not logged; "
+      << senders.size() << " messages from "
+      << (senders.empty() ? std::string("nobody") : senders.front());
   for (const auto& line : logged) EXPECT_EQ(line.find("4711"), std::string::npos) << line;
   bad = recordRequest(figure[0]);
   bad.taken_at = "2023-03-21T10:00:00Z";
