@@ -8,7 +8,8 @@ catkin_add_gtest(vicc_anatomy_viz_model_test
   test/core/EncodingConfigTest.cpp
   test/core/InjectivityTest.cpp
   test/core/LevelMappingTest.cpp
-  test/core/TimeFormatTest.cpp)
+  test/core/TimeFormatTest.cpp
+  test/core/YamlReadingTest.cpp)
 catkin_add_gtest(vicc_anatomy_viz_encoding_test
   test/core/ExaminationValidatorTest.cpp
   test/core/StatusEncoderTest.cpp)
@@ -23,7 +24,7 @@ foreach(test_target vicc_anatomy_viz_model_test vicc_anatomy_viz_encoding_test
     vicc_anatomy_viz_store_test vicc_anatomy_viz_exchange_test vicc_anatomy_viz_cli_test)
   target_compile_options(${test_target} PRIVATE ${VICC_WARNINGS})
   target_compile_definitions(${test_target} PRIVATE ${VICC_TEST_DEFINITIONS})
-  target_link_libraries(${test_target} vicc_anatomy_viz_cli vicc_anatomy_viz_core gtest_main)
+  target_link_libraries(${test_target} vicc_anatomy_viz_cli vicc_anatomy_viz_core yaml-cpp gtest_main)
 endforeach()
 
 # The node's services against a fresh database file.

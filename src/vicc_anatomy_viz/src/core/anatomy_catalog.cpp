@@ -34,7 +34,7 @@ Side contralateral(Side side) {
 
 AnatomyCatalog AnatomyCatalog::fromYamlText(const std::string& yaml_text,
                                             const std::string& origin) {
-  const Cursor root(origin, "", yaml_reading::parseText(yaml_text, origin));
+  const Cursor root = yaml_reading::parseText(yaml_text, origin);
   AnatomyCatalog catalog;
   for (const auto& item : root.sequence("structure_classes")) {
     item.allowOnly({"id", "label", "laterality", "proxy", "requires_fma_id"});

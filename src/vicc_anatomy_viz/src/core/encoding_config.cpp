@@ -43,10 +43,9 @@ SourceProperty readSource(const Cursor& item, const Domain& property_domain) {
   source.label = item.string("label", source.prop_type);
   source.domain = readDomain(item);
   const Cursor derive = item.child("derive");
-  if (!derive.node().IsMap()) derive.fail("derive maps source values to property values");
-  for (const auto& entry : derive.node()) {
-    const Cursor target = derive.sub("." + entry.first.Scalar(), entry.second);
-    source.derive[entry.first.Scalar()] = readValue(target, property_domain);
+  if (!derive.isMap()) derive.fail("derive maps source values to property values");
+  for (const auto& [raw, target] : derive.entries()) {
+    source.derive[raw] = readValue(target, property_domain);
   }
   return source;
 }
@@ -135,7 +134,7 @@ View readView(const Cursor& item) {
 
 EncodingConfig EncodingConfig::fromYamlText(const std::string& yaml_text,
                                             const std::string& origin) {
-  const Cursor root(origin, "", yaml_reading::parseText(yaml_text, origin));
+  const Cursor root = yaml_reading::parseText(yaml_text, origin);
   root.allowOnly({"hues", "visual_variables", "categories", "views"});
   EncodingConfig config;
   for (const auto& item : root.sequence("hues")) {

@@ -11,14 +11,10 @@
 
 namespace vicc_anatomy_viz::yaml_reading {
 
-YAML::Node parseText(const std::string& text, const std::string& origin) {
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    std::ostringstream out;
-    out << origin << ":" << e.mark.line + 1 << ":" << e.mark.column + 1 << ": " << e.msg;
-    throw ConfigError(out.str());
-  }
+Cursor parseText(const std::string& text, const std::string& origin) {
+  auto document = std::make_shared<const YamlDocument>(parseYamlDocument(text, origin));
+  const YamlNode* root = document->nodes.empty() ? nullptr : &document->nodes.front();
+  return Cursor(std::move(document), "", root);
 }
 
 std::string readFile(const std::string& path) {
@@ -30,43 +26,66 @@ std::string readFile(const std::string& path) {
 }
 
 std::string Cursor::where() const {
-  std::ostringstream out;
-  out << origin_;
-  if (node_.IsDefined() && !node_.IsNull() && node_.Mark().line >= 0) {
-    out << ":" << node_.Mark().line + 1;
-  }
-  if (!path_.empty()) out << ": " << path_;
-  return out.str();
+  std::string out = document_->origin;
+  if (node_ && node_->kind != YamlNode::Kind::kNull) out += ":" + std::to_string(node_->line + 1);
+  if (!path_.empty()) out += ": " + path_;
+  return out;
 }
 
 void Cursor::fail(const std::string& message) const { throw ConfigError(where() + ": " + message); }
 
+const YamlNode* Cursor::find(const std::string& key) const {
+  if (!isMap()) return nullptr;
+  const auto& children = node_->children;
+  for (std::size_t i = 0; i + 1 < children.size(); i += 2) {
+    const YamlNode& candidate = document_->nodes[children[i]];
+    if (candidate.kind == YamlNode::Kind::kScalar && candidate.scalar == key) {
+      return &document_->nodes[children[i + 1]];
+    }
+  }
+  return nullptr;
+}
+
+Cursor Cursor::at(std::string path, std::size_t index) const {
+  return Cursor(document_, std::move(path), &document_->nodes[index]);
+}
+
 bool Cursor::has(const std::string& key) const {
-  return node_.IsMap() && node_[key].IsDefined() && !node_[key].IsNull();
+  const YamlNode* value = find(key);
+  return value && value->kind != YamlNode::Kind::kNull;
 }
 
 Cursor Cursor::child(const std::string& key) const {
-  if (!node_.IsMap()) fail("expected a map with key '" + key + "'");
-  if (!has(key)) fail("missing '" + key + "'");
-  return Cursor(origin_, path_.empty() ? key : path_ + "." + key, node_[key]);
+  if (!isMap()) fail("expected a map with key '" + key + "'");
+  const YamlNode* value = find(key);
+  if (!value || value->kind == YamlNode::Kind::kNull) fail("missing '" + key + "'");
+  return Cursor(document_, path_.empty() ? key : path_ + "." + key, value);
 }
 
 Cursor Cursor::optionalChild(const std::string& key) const {
-  if (!has(key)) return Cursor(origin_, path_ + "." + key, YAML::Node());
+  if (!has(key)) return Cursor(document_, path_ + "." + key, nullptr);
   return child(key);
 }
 
 std::vector<Cursor> Cursor::items() const {
-  if (!node_.IsSequence()) fail("expected a list");
+  if (!node_ || node_->kind != YamlNode::Kind::kSequence) fail("expected a list");
   std::vector<Cursor> out;
-  for (std::size_t i = 0; i < node_.size(); ++i) {
-    out.emplace_back(origin_, path_ + "[" + std::to_string(i) + "]", node_[i]);
+  out.reserve(node_->children.size());
+  for (std::size_t i = 0; i < node_->children.size(); ++i) {
+    out.push_back(at(path_ + "[" + std::to_string(i) + "]", node_->children[i]));
   }
   return out;
 }
 
-Cursor Cursor::sub(const std::string& path_suffix, const YAML::Node& node) const {
-  return Cursor(origin_, path_ + path_suffix, node);
+std::vector<std::pair<std::string, Cursor>> Cursor::entries() const {
+  if (!isMap()) fail("expected a map");
+  std::vector<std::pair<std::string, Cursor>> out;
+  const auto& children = node_->children;
+  for (std::size_t i = 0; i + 1 < children.size(); i += 2) {
+    const std::string& key = document_->nodes[children[i]].scalar;
+    out.emplace_back(key, at(path_ + "." + key, children[i + 1]));
+  }
+  return out;
 }
 
 std::vector<Cursor> Cursor::sequence(const std::string& key) const { return child(key).items(); }
@@ -77,8 +96,8 @@ std::vector<Cursor> Cursor::optionalSequence(const std::string& key) const {
 }
 
 std::string Cursor::asString() const {
-  if (!node_.IsScalar()) fail("expected a text value");
-  return node_.Scalar();
+  if (!isScalar()) fail("expected a text value");
+  return node_->scalar;
 }
 
 double Cursor::asDouble() const {
@@ -138,14 +157,14 @@ std::vector<std::string> Cursor::strings(const std::string& key) const {
 }
 
 void Cursor::allowOnly(const std::vector<std::string>& allowed) const {
-  if (!node_.IsMap()) fail("expected a map");
-  for (const auto& entry : node_) {
-    const std::string key = entry.first.Scalar();
-    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-      std::ostringstream known;
-      for (std::size_t i = 0; i < allowed.size(); ++i) known << (i ? ", " : "") << allowed[i];
-      fail("unknown key '" + key + "' (known: " + known.str() + ")");
-    }
+  if (!isMap()) fail("expected a map");
+  const auto& children = node_->children;
+  for (std::size_t i = 0; i + 1 < children.size(); i += 2) {
+    const std::string& key = document_->nodes[children[i]].scalar;
+    if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+    std::string known;
+    for (const auto& name : allowed) known += (known.empty() ? "" : ", ") + name;
+    fail("unknown key '" + key + "' (known: " + known + ")");
   }
 }
 

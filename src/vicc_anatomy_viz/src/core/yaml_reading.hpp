@@ -2,25 +2,31 @@
 // Small helpers to read YAML configuration with messages that name the file, the line and
 // the entry, so that a typo in a view definition is found at once.
 
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
+#include "yaml_document.hpp"
 
 namespace vicc_anatomy_viz::yaml_reading {
 
-/// Parses text; throws ConfigError "origin:line:column: message" on a syntax error.
-YAML::Node parseText(const std::string& text, const std::string& origin);
+class Cursor;
+
+/// Parses text into a cursor on its root; throws ConfigError "origin:line:column: message"
+/// on a syntax error.
+Cursor parseText(const std::string& text, const std::string& origin);
 std::string readFile(const std::string& path);  ///< ConfigError if unreadable
 
-/// A reading position: the file, the entry path (e.g. "categories[2].props[0]") and the node.
+/// A reading position: the file, the entry path (e.g. "categories[2].props[0]") and the node
+/// (none when a key is absent). Cursors share the parsed document and keep it alive.
 class Cursor {
  public:
-  Cursor(std::string origin, std::string path, YAML::Node node)
-      : origin_(std::move(origin)), path_(std::move(path)), node_(std::move(node)) {}
+  Cursor(std::shared_ptr<const YamlDocument> document, std::string path, const YamlNode* node)
+      : document_(std::move(document)), path_(std::move(path)), node_(node) {}
 
-  const YAML::Node& node() const { return node_; }
   const std::string& path() const { return path_; }
+  bool isMap() const { return node_ && node_->kind == YamlNode::Kind::kMap; }
   /// "file:line: path" for messages.
   std::string where() const;
   [[noreturn]] void fail(const std::string& message) const;
@@ -31,8 +37,9 @@ class Cursor {
   std::vector<Cursor> sequence(const std::string& key) const;          ///< required sequence
   std::vector<Cursor> optionalSequence(const std::string& key) const;  ///< empty if missing
   std::vector<Cursor> items() const;                                   ///< this node as a sequence
-  /// A cursor on `node` below this one (e.g. a map entry), named path + suffix.
-  Cursor sub(const std::string& path_suffix, const YAML::Node& node) const;
+  /// The entries of this map in file order: key text and a cursor on the value (named
+  /// path.key); fails if this is not a map.
+  std::vector<std::pair<std::string, Cursor>> entries() const;
 
   std::string asString() const;
   double asDouble() const;
@@ -51,9 +58,14 @@ class Cursor {
   void allowOnly(const std::vector<std::string>& allowed) const;
 
  private:
-  std::string origin_;
+  bool isScalar() const { return node_ && node_->kind == YamlNode::Kind::kScalar; }
+  /// The value of `key` in this map, or nullptr (the first one if a key repeats).
+  const YamlNode* find(const std::string& key) const;
+  Cursor at(std::string path, std::size_t index) const;
+
+  std::shared_ptr<const YamlDocument> document_;
   std::string path_;
-  YAML::Node node_;
+  const YamlNode* node_;
 };
 
 }  // namespace vicc_anatomy_viz::yaml_reading
