@@ -18,7 +18,7 @@ PACKAGES=(
   # numerics, vision, geometry
   libeigen3-dev libopencv-dev libopencv-contrib-dev libpcl-dev libpcl-conversions-dev libceres-dev
   # data and formats
-  libsqlite3-dev libyaml-cpp-dev nlohmann-json3-dev libtinyxml2-dev libassimp-dev assimp-testmodels
+  libsqlite3-dev libyaml-dev libyaml-cpp-dev pkg-config nlohmann-json3-dev libtinyxml2-dev libassimp-dev assimp-testmodels
   python3-yaml
   libpotrace-dev libpng-dev
   # tests

@@ -19,7 +19,7 @@ catkin_add_gtest(vicc_anatomy_viz_fhir_conformance_test test/fhir/FhirConformanc
 foreach(test_target vicc_anatomy_viz_fhir_codes_test vicc_anatomy_viz_fhir_conformance_test)
   target_compile_options(${test_target} PRIVATE ${VICC_WARNINGS})
   target_compile_definitions(${test_target} PRIVATE ${VICC_TEST_DEFINITIONS})
-  target_link_libraries(${test_target} vicc_anatomy_viz_core gtest_main)
+  target_link_libraries(${test_target} vicc_anatomy_viz_core yaml-cpp gtest_main)
 endforeach()
 
 target_compile_definitions(vicc_anatomy_viz_fhir_conformance_test PRIVATE

@@ -80,6 +80,10 @@ std::string describeProperty(const Property& prop) {
 
 json propertyCodeSystem(const EncodingConfig& config) {
   ConceptList concepts(fhir::kCodeSystem);
+  concepts.add(fhir::kExaminationCode, "Neurological examination",
+               "One examination: groups its findings (hasMember) and states whether any was "
+               "abnormal; a structure without a finding is normal unless the examination "
+               "carries the partial modifier extension.");
   for (const Category& category : config.categories) {
     for (const Property& prop : category.props) {
       const std::string code = category.id + "." + prop.prop_type;
@@ -117,6 +121,10 @@ json valueCodeSystem(const EncodingConfig& config) {
     }
   }
   ConceptList concepts(fhir::kValueSystem);
+  concepts.add(fhir::kNoAbnormalFindings, "No abnormal findings",
+               "Value of an examination: examined, every structure normal");
+  concepts.add(fhir::kAbnormalFindings, "Abnormal findings",
+               "Value of an examination: its members record the abnormal findings");
   for (const std::string& label : labels) concepts.add(label, label, "Value of " + used_by[label]);
   return codeSystem(
       {fhir::kValueSystem, "ViccNeurologicalStatusValues", "VICC neurological status values",

@@ -4,6 +4,7 @@
 #include "fhir_codes.hpp"
 #include "vicc_anatomy_viz/errors.hpp"
 #include "vicc_anatomy_viz/fhir_bundle.hpp"
+#include "vicc_anatomy_viz/fhir_standard_codes.hpp"
 #include "vicc_anatomy_viz/time_format.hpp"
 
 namespace vicc_anatomy_viz {
@@ -106,9 +107,11 @@ std::vector<json> findingObservations(const Examination& examination, const Enco
                               finding.structure + "|" + toString(finding.side);
       json observation = {{"resourceType", "Observation"}, {"id", resourceId(key)}};
       observation.update(common);
-      observation["code"] = {
-          {"coding", json::array({coding(fhir::kCodeSystem, code,
-                                         coded->category->label + " " + coded->label)})}};
+      // Ours first (the import reads it), then the standard codes of the same property.
+      json codings = json::array(
+          {coding(fhir::kCodeSystem, code, coded->category->label + " " + coded->label)});
+      for (const auto& standard : standardCodings(code)) codings.push_back(standard);
+      observation["code"] = {{"coding", codings}};
       observation["bodySite"] = bodySite(anatomy, *structure, finding.side);
       observation.update(valueElement(*coded->domain, value));
       out.push_back({{"fullUrl", resourceUrn(key)}, {"resource", observation}});

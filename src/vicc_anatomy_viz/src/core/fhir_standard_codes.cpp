@@ -48,15 +48,14 @@ StandardCoding readCoding(const Cursor& entry) {
 }  // namespace
 
 StandardCodes StandardCodes::fromYamlText(const std::string& yaml_text, const std::string& origin) {
-  const Cursor root(origin, "", yaml_reading::parseText(yaml_text, origin));
+  const Cursor root = yaml_reading::parseText(yaml_text, origin);
   root.allowOnly({"codes"});
   const Cursor codes = root.child("codes");
-  if (!codes.node().IsMap()) codes.fail("expected a map from our codes to codings");
+  if (!codes.isMap()) codes.fail("expected a map from our codes to codings");
   StandardCodes out;
-  for (const auto& item : codes.node()) {
-    const std::string our_code = item.first.as<std::string>();
+  for (const auto& [our_code, codings] : codes.entries()) {
     std::set<std::pair<std::string, std::string>> seen;
-    for (const Cursor& entry : codes.sub("." + our_code, item.second).items()) {
+    for (const Cursor& entry : codings.items()) {
       StandardCoding coding = readCoding(entry);
       if (!seen.emplace(coding.coding["system"].get<std::string>(),
                         coding.coding["code"].get<std::string>())

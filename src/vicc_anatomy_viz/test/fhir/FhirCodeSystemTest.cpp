@@ -73,9 +73,15 @@ TEST(FhirCodeSystemTest, BundleHoldsOneActiveCompleteCodeSystemPerExportSystem) 
 TEST(FhirCodeSystemTest, PropertyCodesAreTheCategoryPropertiesAndTheirRecordedSources) {
   const json& system = codeSystemWithUrl(shippedCodeSystems(), fhir::kCodeSystem);
   const std::vector<std::string> expected = {
-      "radicular_pain.intensity",   "radicular_pain.trigger",      "paresis.intensity",
-      "paresis.muscle_strength",    "t_reflex.intensity",          "excretion_disorder.intensity",
-      "sensory_disorder.intensity", "sensory_disorder.paresthesia"};
+      "examination",  // the grouping Observation of one examination
+      "radicular_pain.intensity",
+      "radicular_pain.trigger",
+      "paresis.intensity",
+      "paresis.muscle_strength",
+      "t_reflex.intensity",
+      "excretion_disorder.intensity",
+      "sensory_disorder.intensity",
+      "sensory_disorder.paresthesia"};
   EXPECT_EQ(codesOf(system), expected);
   const json& pain = conceptWithCode(system, "radicular_pain.intensity");
   EXPECT_EQ(pain["display"], "Radicular pain intensity");
@@ -90,8 +96,14 @@ TEST(FhirCodeSystemTest, PropertyCodesAreTheCategoryPropertiesAndTheirRecordedSo
 
 TEST(FhirCodeSystemTest, ValueCodesAreTheNominalAndOrdinalLabelsWithoutBooleans) {
   const json& system = codeSystemWithUrl(shippedCodeSystems(), fhir::kValueSystem);
-  const std::vector<std::string> expected = {"constant", "stress",   "none",
-                                             "mild",     "moderate", "severe"};
+  const std::vector<std::string> expected = {"no-abnormal-findings",
+                                             "abnormal-findings",  // the value of an examination
+                                             "constant",
+                                             "stress",
+                                             "none",
+                                             "mild",
+                                             "moderate",
+                                             "severe"};
   EXPECT_EQ(codesOf(system), expected);
   EXPECT_EQ(conceptWithCode(system, "stress")["definition"], "Value of radicular_pain.trigger");
   EXPECT_EQ(conceptWithCode(system, "mild")["display"], "mild");
@@ -138,7 +150,7 @@ TEST(FhirCodeSystemTest, EveryCodeOfOursInTheExportIsDefined) {
   EXPECT_GT(checked, 2 * exported["entry"].size());
 }
 
-TEST(FhirCodeSystemTest, AValueSystemWithoutLabelsHasNoConceptArray) {
+TEST(FhirCodeSystemTest, WithoutLabelsOnlyTheExaminationValuesAreDefined) {
   YAML::Node root = test::shippedConfigYaml();
   YAML::Node reflex = test::entryWithId(root["categories"], "t_reflex");
   root["categories"] = YAML::Load("[]");
@@ -147,10 +159,11 @@ TEST(FhirCodeSystemTest, AValueSystemWithoutLabelsHasNoConceptArray) {
       "[{id: reflexes, label: Reflexes, categories: [{category: t_reflex, hue: green}]}]");
   const json bundle = codeSystemResources(test::modelFrom(root));
   const json& values = codeSystemWithUrl(bundle, fhir::kValueSystem);
-  EXPECT_EQ(values["count"], 0);
-  EXPECT_FALSE(values.contains("concept"));  // FHIR JSON never has an empty array
+  EXPECT_EQ(values["count"], 2);
+  EXPECT_EQ(codesOf(values),
+            (std::vector<std::string>{fhir::kNoAbnormalFindings, fhir::kAbnormalFindings}));
   EXPECT_EQ(codesOf(codeSystemWithUrl(bundle, fhir::kCodeSystem)),
-            std::vector<std::string>{"t_reflex.intensity"});
+            (std::vector<std::string>{fhir::kExaminationCode, "t_reflex.intensity"}));
 }
 
 }  // namespace
