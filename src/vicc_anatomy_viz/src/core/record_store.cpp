@@ -284,10 +284,13 @@ std::vector<SupersededExamination> RecordStore::history(const std::string& patie
   while (query.step()) {
     SupersededExamination version;
     try {
-      const auto parsed =
-          examinationsFromJson(parseJsonText(query.columnText(1), "history"), "history");
+      const nlohmann::json record = parseJsonText(query.columnText(1), "history");
+      const auto parsed = examinationsFromJson(record, "history");
       if (parsed.size() != 1) throw ExchangeError("not one examination");
       version.examination = parsed.front();
+      // The version keeps the provenance it had when it was current (none before schema 2).
+      const nlohmann::json provenance = record.value("provenance", nlohmann::json::object());
+      version.examination.source = provenance.value("source", std::string("unknown"));
     } catch (const std::exception&) {
       throw StoreError(StoreError::Kind::kCorrupt,
                        "patient database '" + config_.path +

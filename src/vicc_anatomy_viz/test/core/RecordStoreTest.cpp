@@ -313,5 +313,102 @@ TEST(RecordStoreTest, ConfigurationIsValidated) {
   EXPECT_NE(message.find("is a directory"), std::string::npos);
 }
 
+TEST(RecordStoreTest, ReplacementKeepsTheReplacedVersionAsHistory) {
+  TempDir dir;
+  RecordStore store(storeAt(dir.file("p.db")));
+  const auto figure = figurePatient();
+  store.write(validated({figure[0]}));
+  Examination corrected = figure[0];
+  corrected.source = "cli";
+  corrected.findings.pop_back();
+  store.write(validated({corrected}), WriteMode::kReplace);
+  EXPECT_EQ(store.examinations("SDH-046").at(0).findings.size(), corrected.findings.size());
+  const auto history = store.history("SDH-046");
+  ASSERT_EQ(history.size(), 1u);
+  EXPECT_EQ(history[0].examination.taken_at_us, figure[0].taken_at_us);
+  EXPECT_EQ(history[0].examination.findings.size(), figure[0].findings.size());
+  EXPECT_EQ(history[0].examination.source, "json");
+  EXPECT_GT(history[0].examination.recorded_at, 0);
+  EXPECT_GE(history[0].superseded_at, history[0].examination.recorded_at);
+  EXPECT_EQ(history[0].replaced_by_source, "cli");
+}
+
+TEST(RecordStoreTest, AnEmptyReplacementNeedsTheExplicitMode) {
+  // A pre-operative examination must not be wiped by an accidental empty replacement.
+  TempDir dir;
+  RecordStore store(storeAt(dir.file("p.db")));
+  const auto figure = figurePatient();
+  store.write(validated({figure[0]}));
+  Examination empty = figure[0];
+  empty.findings.clear();
+  std::string message;
+  try {
+    store.write(validated({empty}), WriteMode::kReplace);
+    FAIL() << "an empty examination replaced recorded findings";
+  } catch (const StoreError& e) {
+    EXPECT_EQ(e.kind(), StoreError::Kind::kConflict);
+    message = e.what();
+  }
+  EXPECT_NE(message.find("by one without findings needs the explicit replace-with-empty"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(store.examinations("SDH-046").at(0).findings.size(), figure[0].findings.size());
+  EXPECT_TRUE(store.history("SDH-046").empty());
+  store.write(validated({empty}), WriteMode::kReplaceEvenWithEmpty);
+  EXPECT_TRUE(store.examinations("SDH-046").at(0).findings.empty());
+  EXPECT_EQ(store.history("SDH-046").at(0).examination.findings.size(), figure[0].findings.size());
+}
+
+TEST(RecordStoreTest, StatusAndPartialFlagAreStored) {
+  TempDir dir;
+  RecordStore store(storeAt(dir.file("p.db")));
+  Examination examination = figurePatient()[0];
+  examination.status = ExaminationStatus::kPreliminary;
+  examination.partial = true;
+  examination.partial_reason = "1 observation(s) not imported";
+  examination.taken_at_us += 250000;  // sub-second times are kept
+  store.write(validated({examination}));
+  const auto loaded = store.examinationAtOrBefore("SDH-046", examination.taken_at_us);
+  ASSERT_TRUE(loaded);
+  EXPECT_EQ(loaded->taken_at_us, examination.taken_at_us);
+  EXPECT_EQ(loaded->status, ExaminationStatus::kPreliminary);
+  EXPECT_TRUE(loaded->partial);
+  EXPECT_EQ(loaded->partial_reason, examination.partial_reason);
+  EXPECT_FALSE(store.examinationAtOrBefore("SDH-046", examination.taken_at_us - 1));
+}
+
+TEST(RecordStoreTest, WritesAreDurableAndFilesPrivate) {
+  TempDir dir;
+  const std::string path = dir.file("new/dir/p.db");
+  RecordStore store(storeAt(path));
+  EXPECT_EQ(store.synchronousSetting(), 2);  // FULL: an acknowledged write survives power loss
+  store.write(validated({figurePatient()[0]}));
+  namespace fs = std::filesystem;
+  EXPECT_EQ(fs::status(path).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write);
+  EXPECT_EQ(fs::status(dir.file("new/dir")).permissions() & fs::perms::all, fs::perms::owner_all);
+  EXPECT_TRUE(store.warnings().empty());
+  fs::permissions(path, fs::perms::group_read | fs::perms::others_read, fs::perm_options::add);
+  RecordStore again(storeAt(path));
+  ASSERT_FALSE(again.warnings().empty());
+  EXPECT_NE(again.warnings()[0].find("chmod 600"), std::string::npos) << again.warnings()[0];
+}
+
+TEST(RecordStoreTest, ReadOnlyStoreNeverCreatesAndNeverWrites) {
+  TempDir dir;
+  StoreConfig config = storeAt(dir.file("missing/p.db"));
+  config.read_only = true;
+  std::string message;
+  EXPECT_EQ(storeErrorKind([&] { RecordStore store(config); }, &message),
+            StoreError::Kind::kNotFound);
+  EXPECT_NE(message.find("does not exist"), std::string::npos) << message;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("missing")));
+  config.path = dir.file("p.db");
+  { RecordStore(storeAt(config.path)).write(validated({figurePatient()[0]})); }
+  RecordStore reader(config);
+  EXPECT_EQ(reader.listPatients().size(), 1u);
+  EXPECT_THROW(reader.write(validated({figurePatient()[1]})), StoreError);
+}
+
 }  // namespace
 }  // namespace vicc_anatomy_viz

@@ -314,5 +314,33 @@ TEST(StatusEncoderTest, JsonCarriesEverythingTheAvatarNeeds) {
   EXPECT_EQ(json["notes"].size(), 2u);
 }
 
+TEST(StatusEncoderTest, PartialAndPreliminaryExaminationsSaySoEverywhere) {
+  Examination examination = examinationOf({test::finding(
+      "radicular_pain", "dermatome_L5", Side::kLeft, {{"intensity", Value::number(6)}})});
+  EncodedStatus complete = encode(examination);
+  EXPECT_FALSE(complete.partial);
+  EXPECT_EQ(complete.structures.at(0).overlay_text.find("partial"), std::string::npos);
+
+  examination.partial = true;
+  examination.partial_reason = "1 observation(s) not imported";
+  examination.status = ExaminationStatus::kPreliminary;
+  const EncodedStatus status = encode(examination);
+  EXPECT_TRUE(status.partial);
+  EXPECT_EQ(status.partial_reason, examination.partial_reason);
+  EXPECT_EQ(status.examination_status, ExaminationStatus::kPreliminary);
+  const std::string& overlay = status.structures.at(0).overlay_text;
+  EXPECT_NE(overlay.find("[partial examination]"), std::string::npos) << overlay;
+  EXPECT_NE(overlay.find("[preliminary]"), std::string::npos) << overlay;
+  ASSERT_GE(status.notes.size(), 2u);
+  EXPECT_NE(status.notes[0].find("PRELIMINARY"), std::string::npos);
+  EXPECT_NE(status.notes[1].find("PARTIAL EXAMINATION (1 observation(s) not imported)"),
+            std::string::npos);
+  // A partial examination without findings is not "no abnormal findings": the flag travels.
+  examination.findings.clear();
+  const nlohmann::json document = toJson(encode(examination));
+  EXPECT_TRUE(document["examination_partial"].get<bool>());
+  EXPECT_EQ(document["examination_status"], "preliminary");
+}
+
 }  // namespace
 }  // namespace vicc_anatomy_viz

@@ -2,7 +2,10 @@
 // giving clear errors with exit code 1 (usage errors 2) and nothing half-written.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "../core/test_support.hpp"
 #include "vicc_anatomy_viz/patient_cli.hpp"
@@ -159,6 +162,93 @@ TEST_F(PatientCliTest, CheckAndConfigReport) {
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("saturation_brightness (3) quantized"), std::string::npos);
   EXPECT_NE(r.out.find("shown alternately"), std::string::npos);
+}
+
+TEST_F(PatientCliTest, AllNormalFollowUpSurvivesAFhirRoundTrip) {
+  ASSERT_EQ(run({"import", sample("fig4_6_patient.json")}).code, 0);
+  const std::string follow_up = dir_.file("normal.json");
+  test::writeFile(follow_up, R"({"format": "vicc-examination", "version": 1,
+    "patient": "SDH-046", "taken_at": "2023-06-01T09:00:00Z", "findings": []})");
+  ASSERT_EQ(run({"record", follow_up}).code, 0);
+  const std::string bundle = dir_.file("bundle.json");
+  ASSERT_EQ(run({"export", "--format", "fhir", "--out", bundle}).code, 0);
+  const std::string copy = dir_.file("copy.db");
+  ASSERT_EQ(run({"import", bundle}, copy).code, 0);
+  const Result status = run({"encode", "--patient", "SDH-046", "--date", "2023-06-02"}, copy);
+  ASSERT_EQ(status.code, 0) << status.err;
+  EXPECT_NE(status.out.find("examination 2023-06-01T09:00:00Z"), std::string::npos) << status.out;
+  EXPECT_NE(status.out.find("no abnormal findings"), std::string::npos) << status.out;
+}
+
+TEST_F(PatientCliTest, PartialImportIsShownAsPartial) {
+  nlohmann::json bundle =
+      nlohmann::json::parse(test::fileBytes(sample("fhir/hospital_feed_bundle.json")));
+  bundle["entry"][1]["resource"]["code"]["coding"][0]["code"] = "radicular_pain.quality";
+  const std::string file = dir_.file("partial.json");
+  test::writeFile(file, bundle.dump());
+  EXPECT_EQ(run({"import", file}).code, 1);  // unknown code: rejected unless skipped
+  const Result imported = run({"import", file, "--skip-unknown"});
+  ASSERT_EQ(imported.code, 0) << imported.err;
+  const Result status = run({"encode", "--patient", "SDH-106"});
+  EXPECT_NE(status.out.find("PARTIAL (1 observation(s) not imported)"), std::string::npos)
+      << status.out;
+  EXPECT_NE(status.out.find("[partial examination]"), std::string::npos) << status.out;
+  const auto json_status =
+      nlohmann::json::parse(run({"encode", "--patient", "SDH-106", "--json"}).out);
+  EXPECT_TRUE(json_status["examination_partial"].get<bool>());
+}
+
+TEST_F(PatientCliTest, ReplaceKeepsHistoryAndEmptyReplaceNeedsItsFlag) {
+  ASSERT_EQ(run({"import", sample("fig4_6_patient.json")}).code, 0);
+  const std::string empty = dir_.file("empty.json");
+  test::writeFile(empty, R"({"format": "vicc-examination", "version": 1,
+    "patient": "SDH-046", "taken_at": "2023-03-06T09:15:00Z", "findings": []})");
+  Result r = run({"record", empty, "--replace"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("needs the explicit replace-with-empty option"), std::string::npos) << r.err;
+  r = run({"record", empty, "--replace", "--replace-with-empty"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = run({"history", "--patient", "SDH-046"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("2 examination(s), 1 superseded version(s)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("superseded  recorded"), std::string::npos) << r.out;
+  const auto exported = nlohmann::json::parse(run({"export"}).out);
+  EXPECT_EQ(exported["patients"][0]["superseded"].size(), 1u);
+  const auto fhir = nlohmann::json::parse(run({"export", "--format", "fhir"}).out);
+  EXPECT_EQ(fhir["entry"][0]["resource"]["status"], "amended");
+}
+
+TEST_F(PatientCliTest, ExportNeverOverwritesTheDatabaseAndWritesPrivateFiles) {
+  ASSERT_EQ(run({"import", sample("cases.json")}).code, 0);
+  const std::string before = test::fileBytes(db_);
+  for (const std::string& target : {db_, db_ + "-wal", dir_.file("vicc/../vicc/patients.db")}) {
+    const Result r = run({"export", "--out", target});
+    EXPECT_EQ(r.code, 1) << target;
+    EXPECT_NE(r.err.find("refusing to overwrite it"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(test::fileBytes(db_), before);
+  EXPECT_EQ(run({"list"}).code, 0);
+  const std::string out = dir_.file("export.json");
+  ASSERT_EQ(run({"export", "--out", out}).code, 0);
+  EXPECT_EQ(std::filesystem::status(out).permissions() & std::filesystem::perms::all,
+            std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+}
+
+TEST_F(PatientCliTest, BackupAndRestore) {
+  ASSERT_EQ(run({"import", sample("cases.json")}).code, 0);
+  const std::string backup = dir_.file("backup.db");
+  Result r = run({"backup", "--out", backup});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string listed = run({"list"}).out;
+  ASSERT_EQ(run({"import", sample("fig4_6_patient.json")}).code, 0);
+  EXPECT_NE(run({"list"}).out, listed);
+  r = run({"restore", backup});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("the previous record is kept in"), std::string::npos) << r.out;
+  EXPECT_EQ(run({"list"}).out, listed);
+  r = run({"restore", sample("cases.json")});  // not a database: refused, nothing changed
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(run({"list"}).out, listed);
 }
 
 }  // namespace
