@@ -32,3 +32,5 @@ target_compile_options(patient_status_server_rostest PRIVATE ${VICC_WARNINGS})
 target_compile_definitions(patient_status_server_rostest PRIVATE ${VICC_TEST_DEFINITIONS})
 target_link_libraries(patient_status_server_rostest vicc_anatomy_viz_ros ${catkin_LIBRARIES})
 add_dependencies(patient_status_server_rostest patient_status_server)
+
+include(cmake/fuzz_regression.cmake)

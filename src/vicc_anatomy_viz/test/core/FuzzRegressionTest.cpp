@@ -1,0 +1,74 @@
+// Replays the fuzz seeds and the minimised crash inputs under fuzz/regressions/<target>/
+// through the same harness functions libFuzzer runs (fuzz/run_fuzz.sh).
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "fuzz_targets.hpp"
+#include "test_support.hpp"
+
+namespace vicc_anatomy_viz::test {
+namespace {
+
+struct FuzzTarget {
+  std::string name;
+  int (*harness)(const std::uint8_t*, std::size_t);
+};
+
+std::ostream& operator<<(std::ostream& out, const FuzzTarget& target) { return out << target.name; }
+
+/// The seed files fuzz/seeds.txt lists for the target, then its regression inputs.
+std::vector<std::string> replayInputs(const std::string& target) {
+  std::vector<std::string> paths;
+  std::ifstream seeds(packagePath("fuzz/seeds.txt"));
+  std::string line;
+  while (std::getline(seeds, line)) {
+    std::istringstream fields(line);
+    std::string seed_target, path;
+    if (fields >> seed_target >> path && seed_target == target) paths.push_back(packagePath(path));
+  }
+  const std::filesystem::path regressions = packagePath("fuzz/regressions/" + target);
+  if (std::filesystem::is_directory(regressions)) {
+    for (const auto& entry : std::filesystem::directory_iterator(regressions)) {
+      if (entry.is_regular_file()) paths.push_back(entry.path().string());
+    }
+  }
+  return paths;
+}
+
+int replay(const FuzzTarget& target, const std::string& bytes) {
+  return target.harness(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+}
+
+class FuzzReplayTest : public ::testing::TestWithParam<FuzzTarget> {};
+
+TEST_P(FuzzReplayTest, EverySeedAndRegressionInputHasAnAllowedOutcome) {
+  const std::vector<std::string> inputs = replayInputs(GetParam().name);
+  EXPECT_GE(inputs.size(), 2u) << "no seeds listed for " << GetParam().name;
+  for (const std::string& path : inputs) {
+    ASSERT_TRUE(std::filesystem::is_regular_file(path)) << path;
+    EXPECT_NO_THROW(EXPECT_EQ(replay(GetParam(), fileBytes(path)), 0)) << path;
+  }
+}
+
+TEST_P(FuzzReplayTest, EmptyAndTruncatedInputsHaveAnAllowedOutcome) {
+  for (const std::string& path : replayInputs(GetParam().name)) {
+    const std::string bytes = fileBytes(path);
+    for (std::size_t length : {std::size_t{0}, std::size_t{1}, bytes.size() / 2}) {
+      EXPECT_NO_THROW(replay(GetParam(), bytes.substr(0, length))) << path << " at " << length;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Harnesses, FuzzReplayTest,
+                         ::testing::Values(FuzzTarget{"json_import", fuzz::fuzzJsonImport},
+                                           FuzzTarget{"fhir_import", fuzz::fuzzFhirImport},
+                                           FuzzTarget{"validator", fuzz::fuzzValidator}),
+                         [](const ::testing::TestParamInfo<FuzzTarget>& info) {
+                           return info.param.name;
+                         });
+
+}  // namespace
+}  // namespace vicc_anatomy_viz::test
