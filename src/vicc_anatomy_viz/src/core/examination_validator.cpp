@@ -140,6 +140,11 @@ std::vector<std::string> ExaminationValidator::problems(const Examination& exami
                                     ? examination.describe()
                                     : "examination " + formatTimestamp(examination.taken_at);
   if (!id_problem.empty()) problems.push_back(exam_name + ": " + id_problem);
+  // Our exchange formats write times as ISO 8601 in the years 1900-9999: a time outside them
+  // could be stored but never exported faithfully.
+  if (parseTimestamp(formatTimestamp(examination.taken_at)) != examination.taken_at) {
+    problems.push_back(exam_name + ": time is outside the years 1900-9999");
+  }
   std::set<std::tuple<std::string, std::string, Side>> seen;
   for (std::size_t i = 0; i < examination.findings.size(); ++i) {
     const Finding& finding = examination.findings[i];

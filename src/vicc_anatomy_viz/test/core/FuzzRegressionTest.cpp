@@ -8,6 +8,7 @@
 
 #include "fuzz_targets.hpp"
 #include "test_support.hpp"
+#include "vicc_anatomy_viz/examination_validator.hpp"
 
 namespace vicc_anatomy_viz::test {
 namespace {
@@ -69,6 +70,28 @@ INSTANTIATE_TEST_SUITE_P(Harnesses, FuzzReplayTest,
                          [](const ::testing::TestParamInfo<FuzzTarget>& info) {
                            return info.param.name;
                          });
+
+Examination normalExaminationAt(std::int64_t seconds) {
+  Examination examination;
+  examination.patient_id = "SDH-046";
+  fuzz::setTakenAtSeconds(examination, seconds);
+  return examination;
+}
+
+// Found by the validator target: a time our JSON export cannot write was accepted.
+TEST(FuzzFindingsTest, ValidatorRejectsTimesOutsideTheIsoYears) {
+  const ExaminationValidator validator(shippedModel(), "neurological_status_sdh");
+  const std::int64_t first = -2208988800;  // 1900-01-01T00:00:00Z
+  const std::int64_t last = 253402300799;  // 9999-12-31T23:59:59Z
+  for (const std::int64_t fine : {first, std::int64_t{0}, last}) {
+    EXPECT_TRUE(validator.problems(normalExaminationAt(fine)).empty()) << fine;
+  }
+  for (const std::int64_t outside : {first - 1, last + 1, std::int64_t{-7631201066543745l}}) {
+    const auto problems = validator.problems(normalExaminationAt(outside));
+    ASSERT_EQ(problems.size(), 1u) << joinProblems(problems);
+    EXPECT_NE(problems[0].find("time is outside the years 1900-9999"), std::string::npos);
+  }
+}
 
 }  // namespace
 }  // namespace vicc_anatomy_viz::test
