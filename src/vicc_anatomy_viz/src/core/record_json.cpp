@@ -156,7 +156,11 @@ json findingsToJson(const Examination& examination) {
 
 std::vector<Examination> examinationsFromJson(const json& document, const std::string& source) {
   if (!document.is_object()) throw ExchangeError("a records document must be a JSON object");
-  const std::string format = document.value("format", "");
+  // json::value() would throw type_error for a "format" that is not text.
+  const auto format_field = document.find("format");
+  const std::string format = format_field != document.end() && format_field->is_string()
+                                 ? format_field->get<std::string>()
+                                 : "";
   if (format != kRecordsFormat && format != kExaminationFormat) {
     throw ExchangeError("unknown document format '" + format + "' (expected '" + kRecordsFormat +
                         "', '" + kExaminationFormat + "' or a FHIR Bundle)");

@@ -93,5 +93,12 @@ TEST(FuzzFindingsTest, ValidatorRejectsTimesOutsideTheIsoYears) {
   }
 }
 
+// Found by the JSON import target: a "format" that is not text escaped as json::type_error.
+TEST(FuzzFindingsTest, JsonFormatThatIsNotTextIsAnExchangeError) {
+  for (const char* text : {R"({"format": 4})", R"({"format": ["vicc-examination"]})"}) {
+    EXPECT_THROW(examinationsFromJson(nlohmann::json::parse(text)), ExchangeError) << text;
+  }
+}
+
 }  // namespace
 }  // namespace vicc_anatomy_viz::test
