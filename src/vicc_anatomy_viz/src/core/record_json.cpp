@@ -223,6 +223,9 @@ json parseJsonText(const std::string& text, const std::string& origin) {
     return json::parse(text);
   } catch (const json::parse_error& e) {
     throw ExchangeError(origin + ": invalid JSON (" + std::string(e.what()) + ")");
+  } catch (const json::out_of_range&) {
+    // Not e.what(): it quotes the number, which may be a recorded value.
+    throw ExchangeError(origin + ": invalid JSON (a number is too large)");
   }
 }
 

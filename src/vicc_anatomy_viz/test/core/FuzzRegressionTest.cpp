@@ -100,5 +100,16 @@ TEST(FuzzFindingsTest, JsonFormatThatIsNotTextIsAnExchangeError) {
   }
 }
 
+// Found by both import targets: a number beyond double escaped as json::out_of_range.
+TEST(FuzzFindingsTest, NumberTooLargeIsAnExchangeErrorThatDoesNotQuoteIt) {
+  try {
+    parseJsonText(R"({"values": {"intensity": 2e401}})", "exam.json");
+    FAIL() << "accepted";
+  } catch (const ExchangeError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message, "exam.json: invalid JSON (a number is too large)");
+  }
+}
+
 }  // namespace
 }  // namespace vicc_anatomy_viz::test
