@@ -54,7 +54,7 @@ json bodySite(const AnatomyCatalog& anatomy, const Structure& structure, Side si
 }  // namespace
 
 bool isFhirBundle(const json& document) {
-  return document.is_object() && document.value("resourceType", std::string()) == "Bundle";
+  return fhir_codes::textOr(document, "resourceType", "") == "Bundle";
 }
 
 json examinationsToFhirBundle(const std::vector<Examination>& examinations,

@@ -14,6 +14,7 @@ namespace vicc_anatomy_viz {
 
 using fhir_codes::describeCodings;
 using fhir_codes::findCoding;
+using fhir_codes::textOr;
 using nlohmann::json;
 
 namespace {
@@ -101,7 +102,7 @@ std::optional<Side> readLaterality(const json& body_site) {
   if (body_site.is_object() && body_site.contains("extension") &&
       body_site["extension"].is_array()) {
     for (const auto& extension : body_site["extension"]) {
-      if (extension.is_object() && extension.value("url", "") == fhir::kLateralityExtension) {
+      if (extension.is_object() && textOr(extension, "url", "") == fhir::kLateralityExtension) {
         return sideOfSnomed(extension.value("valueCodeableConcept", json()));
       }
     }
@@ -151,7 +152,7 @@ std::optional<Value> readValue(const json& resource, const std::string& where,
 
 std::optional<ObservedValue> readObservation(const json& resource, const std::string& where,
                                              const EncodingModel& model, ImportReport& report) {
-  const std::string status = resource.value("status", "");
+  const std::string status = textOr(resource, "status", "");
   if (status == "entered-in-error" || status == "cancelled") {
     report.skipped(where + ": status '" + status + "', not imported");
     return std::nullopt;
@@ -217,7 +218,7 @@ FhirImport examinationsFromFhirBundle(const json& bundle, const EncodingModel& m
 
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const json resource = entries[i].is_object() ? entries[i].value("resource", json()) : json();
-    const std::string type = resource.is_object() ? resource.value("resourceType", "") : "";
+    const std::string type = textOr(resource, "resourceType", "");
     if (type != "Observation") {
       // Other resources (Patient, Encounter, ...) may carry names: only the type is reported.
       report.skipped("entry " + std::to_string(i) + ": " +
@@ -226,7 +227,7 @@ FhirImport examinationsFromFhirBundle(const json& bundle, const EncodingModel& m
       continue;
     }
     const std::string where =
-        "entry " + std::to_string(i) + " (Observation " + resource.value("id", "?") + ")";
+        "entry " + std::to_string(i) + " (Observation " + textOr(resource, "id", "?") + ")";
     const auto observed = readObservation(resource, where, model, report);
     if (!observed) continue;
     const ExaminationKey examination{observed->patient, observed->time};

@@ -9,6 +9,7 @@
 #include "fuzz_targets.hpp"
 #include "test_support.hpp"
 #include "vicc_anatomy_viz/examination_validator.hpp"
+#include "vicc_anatomy_viz/fhir_bundle.hpp"
 
 namespace vicc_anatomy_viz::test {
 namespace {
@@ -109,6 +110,40 @@ TEST(FuzzFindingsTest, NumberTooLargeIsAnExchangeErrorThatDoesNotQuoteIt) {
     const std::string message = e.what();
     EXPECT_EQ(message, "exam.json: invalid JSON (a number is too large)");
   }
+}
+
+// Found by the FHIR import target: json::value() threw type_error for a field that is not
+// text; now such a field counts as absent or unknown.
+TEST(FuzzFindingsTest, FhirFieldsThatAreNotTextAreReportedNotThrown) {
+  EXPECT_FALSE(isFhirBundle(nlohmann::json::parse(R"({"resourceType": []})")));
+  const std::string seed = fileBytes(packagePath("fuzz/seeds/observation_bundle.json"));
+  const auto bundle = [&seed](const char* pointer, nlohmann::json replacement) {
+    nlohmann::json document = nlohmann::json::parse(seed);
+    document[nlohmann::json::json_pointer(std::string("/entry/0/resource") + pointer)] =
+        std::move(replacement);
+    return document;
+  };
+  ASSERT_EQ(
+      examinationsFromFhirBundle(nlohmann::json::parse(seed), shippedModel()).examinations.size(),
+      1u);
+  for (const char* pointer : {"/status", "/code/coding/0/system", "/code/coding/0/code"}) {
+    EXPECT_THROW(examinationsFromFhirBundle(bundle(pointer, 1), shippedModel()), ValidationError)
+        << pointer;
+  }
+  // A laterality extension whose url is not text is no laterality: right becomes none, which
+  // the bilateral dermatome does not allow, but the import itself reads it.
+  const FhirImport no_laterality =
+      examinationsFromFhirBundle(bundle("/bodySite/extension/0/url", 7), shippedModel());
+  ASSERT_EQ(no_laterality.examinations.size(), 1u);
+  EXPECT_EQ(no_laterality.examinations[0].findings.at(0).side, Side::kNone);
+  // An id that is not text is named "?"; another resourceType skips the entry.
+  EXPECT_EQ(examinationsFromFhirBundle(bundle("/id", nlohmann::json::object()), shippedModel())
+                .examinations.size(),
+            1u);
+  const FhirImport skipped =
+      examinationsFromFhirBundle(bundle("/resourceType", nullptr), shippedModel());
+  EXPECT_TRUE(skipped.examinations.empty());
+  EXPECT_EQ(skipped.warnings.size(), 1u);
 }
 
 }  // namespace
