@@ -116,8 +116,11 @@ std::optional<Side> readLaterality(const json& body_site) {
 std::optional<Value> readValue(const json& resource, const std::string& where,
                                ImportReport& report) {
   if (resource.contains("valueInteger") && resource["valueInteger"].is_number_integer()) {
-    const auto number = resource["valueInteger"].get<long long>();
-    if (number < -2147483647LL || number > 2147483647LL) {
+    // get<long long>() would wrap an unsigned number above LLONG_MAX to a negative one.
+    const bool too_large = resource["valueInteger"].is_number_unsigned() &&
+                           resource["valueInteger"].get<unsigned long long>() > 2147483647ULL;
+    const auto number = too_large ? 0LL : resource["valueInteger"].get<long long>();
+    if (too_large || number < -2147483647LL || number > 2147483647LL) {
       report.malformed(where + ": valueInteger out of range");
       return std::nullopt;
     }

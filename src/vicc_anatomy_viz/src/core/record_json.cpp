@@ -81,8 +81,11 @@ class Reader {
     for (const auto& [prop_type, value] : values->items()) {
       const std::string where = path + ".values." + prop_type;
       if (value.is_number_integer()) {
-        const auto number = value.get<long long>();
-        if (number < INT_MIN || number > INT_MAX) {
+        // get<long long>() would wrap an unsigned number above LLONG_MAX to a negative one.
+        const bool too_large =
+            value.is_number_unsigned() && value.get<unsigned long long>() > INT_MAX;
+        const auto number = too_large ? 0LL : value.get<long long>();
+        if (too_large || number < INT_MIN || number > INT_MAX) {
           problem(where, "number out of range");
         } else {
           finding.values[prop_type] = Value::number(static_cast<int>(number));

@@ -146,5 +146,26 @@ TEST(FuzzFindingsTest, FhirFieldsThatAreNotTextAreReportedNotThrown) {
   EXPECT_EQ(skipped.warnings.size(), 1u);
 }
 
+// Found with the import harnesses' value checks: an integer above LLONG_MAX was read as a
+// negative one (18446744073709551615 as -1) instead of being reported out of range.
+TEST(FuzzFindingsTest, UnsignedIntegersAboveIntAreOutOfRangeNotWrapped) {
+  for (const char* target : {"json_import", "fhir_import"}) {
+    const std::string path =
+        packagePath(std::string("fuzz/regressions/") + target + "/unsigned_wraps_to_negative.json");
+    const nlohmann::json document = parseJsonText(fileBytes(path), path);
+    try {
+      if (isFhirBundle(document)) {
+        examinationsFromFhirBundle(document, shippedModel());
+      } else {
+        examinationsFromJson(document);
+      }
+      ADD_FAILURE() << target << ": accepted";
+    } catch (const ValidationError& e) {
+      ASSERT_EQ(e.problems().size(), 1u) << e.what();
+      EXPECT_NE(e.problems()[0].find("out of range"), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace vicc_anatomy_viz::test
