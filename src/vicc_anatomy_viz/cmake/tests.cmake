@@ -36,3 +36,4 @@ target_link_libraries(patient_status_server_rostest vicc_anatomy_viz_ros ${catki
 add_dependencies(patient_status_server_rostest patient_status_server)
 include(cmake/database_files_tests.cmake)
 include(cmake/fhir_conformance.cmake)
+include(cmake/fuzz_regression.cmake)

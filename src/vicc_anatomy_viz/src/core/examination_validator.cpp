@@ -138,6 +138,11 @@ std::vector<std::string> ExaminationValidator::problems(const Examination& exami
                                     ? examination.describe()
                                     : "examination " + formatTimestamp(examination.taken_at_us);
   if (!id_problem.empty()) problems.push_back(exam_name + ": " + id_problem);
+  // Our exchange formats write times as ISO 8601 with four-digit years: a time outside them
+  // could be stored but never exported faithfully.
+  if (parseTimestamp(formatTimestamp(examination.taken_at_us)) != examination.taken_at_us) {
+    problems.push_back(exam_name + ": time cannot be written as ISO 8601 (years 0000-9999)");
+  }
   std::set<std::tuple<std::string, std::string, Side>> seen;
   for (std::size_t i = 0; i < examination.findings.size(); ++i) {
     const Finding& finding = examination.findings[i];

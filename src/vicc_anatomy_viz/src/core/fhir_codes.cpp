@@ -23,6 +23,12 @@ std::optional<CodedProperty> propertyOfCode(const EncodingModel& model, const st
   return coded;
 }
 
+std::string textOr(const json& object, const std::string& key, const std::string& fallback) {
+  if (!object.is_object()) return fallback;
+  const auto it = object.find(key);
+  return it != object.end() && it->is_string() ? it->get<std::string>() : fallback;
+}
+
 json coding(const std::string& system, const std::string& code, const std::string& display) {
   json out = {{"system", system}, {"code", code}};
   if (!display.empty()) out["display"] = display;
@@ -35,7 +41,7 @@ const json* findCoding(const json& concept_json, const std::string& system) {
     return nullptr;
   }
   for (const auto& c : concept_json["coding"]) {
-    if (c.is_object() && c.value("system", std::string()) == system && c.contains("code") &&
+    if (c.is_object() && textOr(c, "system", "") == system && c.contains("code") &&
         c["code"].is_string()) {
       return &c;
     }
@@ -49,9 +55,7 @@ std::string describeCodings(const json& concept_json) {
       concept_json["coding"].is_array()) {
     for (const auto& c : concept_json["coding"]) {
       if (!out.empty()) out += ", ";
-      const bool object = c.is_object();
-      out += (object ? c.value("system", std::string("?")) : std::string("?")) + "|" +
-             (object ? c.value("code", std::string("?")) : std::string("?"));
+      out += textOr(c, "system", "?") + "|" + textOr(c, "code", "?");
     }
   }
   return out.empty() ? "(no coding)" : out;

@@ -24,6 +24,10 @@ std::optional<CodedProperty> propertyOfCode(const EncodingModel& model, const st
 
 nlohmann::json coding(const std::string& system, const std::string& code,
                       const std::string& display);
+/// The text of `object[key]`, or `fallback` when it is absent or not text (json::value() would
+/// throw type_error for another type).
+std::string textOr(const nlohmann::json& object, const std::string& key,
+                   const std::string& fallback);
 /// The first coding of `system` with a text code, or nullptr.
 const nlohmann::json* findCoding(const nlohmann::json& concept_json, const std::string& system);
 /// "system|code, system|code" for messages.

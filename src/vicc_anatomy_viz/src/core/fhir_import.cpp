@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "fhir_codes.hpp"
 #include "fhir_observation_reader.hpp"
 #include "vicc_anatomy_viz/errors.hpp"
 #include "vicc_anatomy_viz/fhir_bundle.hpp"
@@ -171,7 +172,7 @@ void FhirImportOptions::validate() const {
 }
 
 bool isFhirBundle(const json& document) {
-  return document.is_object() && document.value("resourceType", std::string()) == "Bundle";
+  return fhir_codes::textOr(document, "resourceType", "") == "Bundle";
 }
 
 FhirImport examinationsFromFhirBundle(const json& bundle, const EncodingModel& model,

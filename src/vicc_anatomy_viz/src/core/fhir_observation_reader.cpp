@@ -39,7 +39,7 @@ void collectModifiers(const json& node, std::vector<std::string>& urls) {
         continue;
       }
       for (const auto& extension : child) {
-        urls.push_back(extension.is_object() ? extension.value("url", std::string("(no url)"))
+        urls.push_back(extension.is_object() ? fhir_codes::textOr(extension, "url", "(no url)")
                                              : std::string("(malformed)"));
       }
     }
@@ -55,7 +55,7 @@ std::vector<std::string> codesOf(const json& concept_json, const std::string& sy
     return codes;
   }
   for (const auto& c : concept_json["coding"]) {
-    if (c.is_object() && c.value("system", std::string()) == system && c.contains("code") &&
+    if (c.is_object() && fhir_codes::textOr(c, "system", "") == system && c.contains("code") &&
         c["code"].is_string()) {
       codes.push_back(c["code"].get<std::string>());
     }
@@ -90,7 +90,7 @@ bool readSubject(const json& resource, ObservationEntry& entry, ImportReport& re
                      fhir::kPseudonymSystem);
     return false;
   }
-  const std::string system = identifier.value("system", std::string());
+  const std::string system = fhir_codes::textOr(identifier, "system", "");
   if (system != fhir::kPseudonymSystem) {
     report.malformed(entry.where + ": subject identifier of system '" + system +
                      "' is not a pseudonym (expected " + fhir::kPseudonymSystem + ")");
@@ -160,7 +160,8 @@ bool readPanel(const json& resource, ObservationEntry& entry, ImportReport& repo
     entry.states_all_normal = codes[0] == fhir::kNoAbnormalFindings;
   }
   for (const auto& extension : resource.value("modifierExtension", json::array())) {
-    if (extension.is_object() && extension.value("url", "") == fhir::kPartialExtension) {
+    if (extension.is_object() &&
+        fhir_codes::textOr(extension, "url", "") == fhir::kPartialExtension) {
       const json reason = extension.value("valueString", json());
       entry.partial_reason = reason.is_string() && !reason.get<std::string>().empty()
                                  ? reason.get<std::string>()
@@ -213,7 +214,8 @@ bool readLaterality(const json& body_site, ObservationEntry& entry, ImportReport
   if (body_site.is_object() && body_site.contains("extension") &&
       body_site["extension"].is_array()) {
     for (const auto& extension : body_site["extension"]) {
-      if (!extension.is_object() || extension.value("url", "") != fhir::kLateralityExtension) {
+      if (!extension.is_object() ||
+          fhir_codes::textOr(extension, "url", "") != fhir::kLateralityExtension) {
         continue;
       }
       ++extensions;
@@ -269,9 +271,9 @@ std::optional<Value> quantityScore(const json& quantity, const std::string& wher
     report.malformed(where + ": valueQuantity has a comparator; a score must be exact");
     return std::nullopt;
   }
-  const std::string unit = quantity.value("unit", std::string());
-  const std::string unit_code = quantity.value("code", std::string());
-  const std::string system = quantity.value("system", std::string());
+  const std::string unit = fhir_codes::textOr(quantity, "unit", "");
+  const std::string unit_code = fhir_codes::textOr(quantity, "code", "");
+  const std::string system = fhir_codes::textOr(quantity, "system", "");
   const auto isScore = [](const std::string& u) {
     return u.empty() || u == "{score}" || u == "{Score}" || u == "score" || u == "1";
   };

@@ -121,8 +121,11 @@ class Reader {
     for (const auto& [prop_type, value] : values->items()) {
       const std::string where = path + ".values." + prop_type;
       if (value.is_number_integer()) {
-        const auto number = value.get<long long>();
-        if (number < INT_MIN || number > INT_MAX) {
+        // get<long long>() would wrap an unsigned number above LLONG_MAX to a negative one.
+        const bool too_large =
+            value.is_number_unsigned() && value.get<unsigned long long>() > INT_MAX;
+        const auto number = too_large ? 0LL : value.get<long long>();
+        if (too_large || number < INT_MIN || number > INT_MAX) {
           problem(where, "number out of range");
         } else {
           finding.values[prop_type] = Value::number(static_cast<int>(number));
@@ -260,7 +263,11 @@ std::vector<Examination> examinationsFromJson(const json& document, const std::s
                                               std::vector<std::string>* warnings,
                                               const JsonImportOptions& options) {
   if (!document.is_object()) throw ExchangeError("a records document must be a JSON object");
-  const std::string format = document.value("format", "");
+  // json::value() would throw type_error for a "format" that is not text.
+  const auto format_field = document.find("format");
+  const std::string format = format_field != document.end() && format_field->is_string()
+                                 ? format_field->get<std::string>()
+                                 : "";
   if (format != kRecordsFormat && format != kExaminationFormat) {
     throw ExchangeError("unknown document format '" + format + "' (expected '" + kRecordsFormat +
                         "', '" + kExaminationFormat + "' or a FHIR Bundle)");
@@ -345,6 +352,9 @@ json parseJsonText(const std::string& text, const std::string& origin) {
     return json::parse(text, DuplicateKeyCheck(origin));
   } catch (const json::parse_error& e) {
     throw ExchangeError(origin + ": invalid JSON (" + std::string(e.what()) + ")");
+  } catch (const json::out_of_range&) {
+    // Not e.what(): it quotes the number, which may be a recorded value.
+    throw ExchangeError(origin + ": invalid JSON (a number is too large)");
   }
 }
 

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# Builds the fuzz targets of the patient-record importers and the validator with clang
+# (libFuzzer + AddressSanitizer + UBSan), outside catkin, and runs each for a bounded time,
+# one after the other on one core. Usage: fuzz/run_fuzz.sh [seconds] [target...]
+# (To run targets side by side, give each run its own FUZZ_WORK_DIR.)
+# Targets: json_import fhir_import validator (default: all). Needs clang and
+# libclang-rt-14-dev. Corpora and crash inputs are kept in the work directory.
+set -euo pipefail
+
+SECONDS_PER_TARGET="${1:-60}"
+shift || true
+TARGETS=("$@")
+[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(json_import fhir_import validator)
+PACKAGE_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+WORK_DIR="${FUZZ_WORK_DIR:-/tmp/vicc_anatomy_viz_fuzz}"
+mkdir -p "$WORK_DIR"
+
+CORE_SOURCES=(
+  anatomy_catalog data_model database_files encoded_status_json encoding_config encoding_model
+  errors examination_validator fhir_codes fhir_export fhir_import fhir_observation_reader
+  fhir_standard_codes injectivity level_mapping patient_record patient_status_service
+  record_json record_store schema_migrations sqlite_connection status_encoder time_format
+  visual_variables yaml_document yaml_reading
+)
+FUZZ_SOURCES=(fuzz_model fuzz_json_import fuzz_fhir_import fuzzed_examinations fuzz_validator)
+FLAGS=(-std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
+       -I"$PACKAGE_DIR/include" -DVICC_ANATOMY_VIZ_SOURCE_DIR="\"$PACKAGE_DIR\"")
+
+# The core and the harnesses once, as objects; then one entry point per target.
+build_objects() {
+  mkdir -p "$WORK_DIR/obj"
+  local name
+  for name in "${CORE_SOURCES[@]}"; do
+    clang++ "${FLAGS[@]}" -c "$PACKAGE_DIR/src/core/$name.cpp" -o "$WORK_DIR/obj/$name.o"
+  done
+  for name in "${FUZZ_SOURCES[@]}"; do
+    clang++ "${FLAGS[@]}" -c "$PACKAGE_DIR/fuzz/$name.cpp" -o "$WORK_DIR/obj/$name.o"
+  done
+}
+
+harness_of() {  # target -> harness function
+  case "$1" in
+    json_import) echo fuzzJsonImport ;;
+    fhir_import) echo fuzzFhirImport ;;
+    validator) echo fuzzValidator ;;
+    *) echo "unknown target $1" >&2; return 1 ;;
+  esac
+}
+
+seed_corpus() {  # target: seeds from fuzz/seeds.txt and the regression inputs
+  local target="$1" corpus="$WORK_DIR/corpus_$1" seed_target path
+  mkdir -p "$corpus"
+  while read -r seed_target path; do
+    [ "$seed_target" = "$target" ] && cp "$PACKAGE_DIR/$path" "$corpus/"
+  done < <(grep -v '^#' "$PACKAGE_DIR/fuzz/seeds.txt")
+  find "$PACKAGE_DIR/fuzz/regressions/$target" -type f -exec cp {} "$corpus/" \;
+}
+
+build_objects
+status=0
+for target in "${TARGETS[@]}"; do
+  clang++ "${FLAGS[@]}" -DVICC_FUZZ_TARGET="$(harness_of "$target")" \
+    "$PACKAGE_DIR/fuzz/libfuzzer_entry.cpp" "$WORK_DIR"/obj/*.o -lyaml -lsqlite3 -o "$WORK_DIR/fuzz_$target"
+  seed_corpus "$target"
+  echo "=== $target for ${SECONDS_PER_TARGET}s"
+  # -jobs=1 runs one worker process that logs to run_<target>/fuzz-0.log (echoed at its end).
+  mkdir -p "$WORK_DIR/run_$target"
+  (cd "$WORK_DIR/run_$target" && nice -n 10 "../fuzz_$target" -jobs=1 \
+     -max_total_time="$SECONDS_PER_TARGET" -max_len=16384 -timeout=10 -rss_limit_mb=2048 \
+     -print_final_stats=1 -artifact_prefix="$WORK_DIR/${target}_" "../corpus_$target") || status=1
+  grep -E '^#[0-9]+ +DONE' "$WORK_DIR/run_$target/fuzz-0.log" || true
+  if grep -q 'ERROR\|deadly signal\|runtime error' "$WORK_DIR/run_$target/fuzz-0.log"; then
+    status=1
+  fi
+done
+exit $status
