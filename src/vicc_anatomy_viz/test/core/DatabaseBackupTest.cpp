@@ -12,17 +12,6 @@
 namespace vicc_anatomy_viz::test {
 namespace {
 
-StoreError::Kind errorKindOf(const std::function<void()>& action, std::string* message) {
-  try {
-    action();
-  } catch (const StoreError& e) {
-    *message = e.what();
-    return e.kind();
-  }
-  ADD_FAILURE() << "no StoreError";
-  return StoreError::Kind::kOther;
-}
-
 std::string dumpOf(const std::string& path) {
   SqliteConnection connection(path, 1000, OpenMode::kReadOnly);
   return recordDump(connection);
@@ -80,13 +69,13 @@ TEST(DatabaseBackupTest, BackupRefusesAnExistingFileAndTheDatabasesOwnFiles) {
   std::filesystem::create_symlink(path, dir.file("link.db"));
   SqliteConnection source(path, 1000, OpenMode::kReadWrite);
   std::string message;
-  EXPECT_EQ(errorKindOf([&] { backupDatabase(source, dir.file("old.db")); }, &message),
+  EXPECT_EQ(storeErrorKind([&] { backupDatabase(source, dir.file("old.db")); }, &message),
             StoreError::Kind::kConflict);
   EXPECT_EQ(message, "backup file '" + dir.file("old.db") +
                          "' exists already; a backup never overwrites a file, choose a new name");
   EXPECT_EQ(fileBytes(dir.file("old.db")), "keep me");
   for (const std::string& own : {path, path + "-wal", dir.file("link.db")}) {
-    EXPECT_EQ(errorKindOf([&] { backupDatabase(source, own); }, &message),
+    EXPECT_EQ(storeErrorKind([&] { backupDatabase(source, own); }, &message),
               StoreError::Kind::kConflict);
     EXPECT_NE(message.find("is the patient database '" + path + "'"), std::string::npos);
   }
@@ -120,7 +109,7 @@ class RestoreRefusalTest : public ::testing::Test {
   /// The kind of the refusal; the live database must be exactly as before.
   StoreError::Kind refusal(const std::string& backup_path, std::string* message) {
     const StoreError::Kind kind =
-        errorKindOf([&] { restoreDatabase(backup_path, *live_); }, message);
+        storeErrorKind([&] { restoreDatabase(backup_path, *live_); }, message);
     EXPECT_NE(message->find("restore refused, '" + live_path_ + "' was not changed"),
               std::string::npos)
         << *message;
@@ -196,7 +185,7 @@ TEST(DatabaseBackupTest, RestoreRefusesTheLiveDatabaseItself) {
   createPatientDatabase(path, 1);
   SqliteConnection live(path, 1000, OpenMode::kReadWrite);
   std::string message;
-  EXPECT_EQ(errorKindOf([&] { restoreDatabase(path + "-wal", live); }, &message),
+  EXPECT_EQ(storeErrorKind([&] { restoreDatabase(path + "-wal", live); }, &message),
             StoreError::Kind::kConflict);
 }
 

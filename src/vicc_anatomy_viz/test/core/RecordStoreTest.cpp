@@ -20,6 +20,7 @@ namespace {
 
 using test::figurePatient;
 using test::shippedModel;
+using test::storeErrorKind;
 using test::TempDir;
 
 StoreConfig storeAt(const std::string& path, int busy_timeout_ms = 5000) {
@@ -56,17 +57,6 @@ class RawDb {
  private:
   sqlite3* db_ = nullptr;
 };
-
-StoreError::Kind storeErrorKind(const std::function<void()>& action, std::string* message) {
-  try {
-    action();
-  } catch (const StoreError& e) {
-    if (message) *message = e.what();
-    return e.kind();
-  }
-  ADD_FAILURE() << "no StoreError";
-  return StoreError::Kind::kOther;
-}
 
 TEST(RecordStoreTest, CreatesAVersionedWalDatabaseInNewDirectories) {
   TempDir dir;
@@ -342,13 +332,8 @@ TEST(RecordStoreTest, AnEmptyReplacementNeedsTheExplicitMode) {
   Examination empty = figure[0];
   empty.findings.clear();
   std::string message;
-  try {
-    store.write(validated({empty}), WriteMode::kReplace);
-    FAIL() << "an empty examination replaced recorded findings";
-  } catch (const StoreError& e) {
-    EXPECT_EQ(e.kind(), StoreError::Kind::kConflict);
-    message = e.what();
-  }
+  EXPECT_EQ(storeErrorKind([&] { store.write(validated({empty}), WriteMode::kReplace); }, &message),
+            StoreError::Kind::kConflict);
   EXPECT_NE(message.find("by one without findings needs the explicit replace-with-empty"),
             std::string::npos)
       << message;

@@ -14,22 +14,11 @@ std::string patientCount(const std::string& path) {
          (reader.immutable() ? " immutable" : "");
 }
 
-StoreError::Kind errorKindOf(const std::function<void()>& action, std::string* message) {
-  try {
-    action();
-  } catch (const StoreError& e) {
-    *message = e.what();
-    return e.kind();
-  }
-  ADD_FAILURE() << "no StoreError";
-  return StoreError::Kind::kOther;
-}
-
 TEST(SqliteConnectionTest, ReadOnlyOnMissingFileThrowsNotFoundAndCreatesNothing) {
   TempDir dir;
   for (const std::string& path : {dir.file("p.db"), dir.file("sub/dir/p.db")}) {
     std::string message;
-    EXPECT_EQ(errorKindOf([&] { SqliteConnection(path, 100, OpenMode::kReadOnly); }, &message),
+    EXPECT_EQ(storeErrorKind([&] { SqliteConnection(path, 100, OpenMode::kReadOnly); }, &message),
               StoreError::Kind::kNotFound);
     EXPECT_EQ(message, "patient database '" + path + "' does not exist");
   }
@@ -39,7 +28,7 @@ TEST(SqliteConnectionTest, ReadOnlyOnMissingFileThrowsNotFoundAndCreatesNothing)
 TEST(SqliteConnectionTest, ReadWriteWithoutCreateOnMissingFileThrowsNotFound) {
   TempDir dir;
   std::string message;
-  EXPECT_EQ(errorKindOf([&] { SqliteConnection(dir.file("p.db"), 100, false); }, &message),
+  EXPECT_EQ(storeErrorKind([&] { SqliteConnection(dir.file("p.db"), 100, false); }, &message),
             StoreError::Kind::kNotFound);
   EXPECT_FALSE(pathExists(dir.file("p.db")));
 }
@@ -58,7 +47,7 @@ TEST(SqliteConnectionTest, ReadOnlySeesCommittedWalDataOfAnOpenWriterAndRefusesW
   EXPECT_FALSE(reader.immutable());
   EXPECT_EQ(reader.queryInt("SELECT count(*) FROM patients"), 5);
   std::string message;
-  EXPECT_EQ(errorKindOf([&] { reader.exec("DELETE FROM patients"); }, &message),
+  EXPECT_EQ(storeErrorKind([&] { reader.exec("DELETE FROM patients"); }, &message),
             StoreError::Kind::kIo);
   EXPECT_NE(message.find("readonly"), std::string::npos) << message;
   EXPECT_EQ(writer.queryInt("SELECT count(*) FROM patients"), 5);
@@ -68,7 +57,7 @@ TEST(SqliteConnectionTest, ReadOnlyOnAFileThatIsNoDatabaseReportsCorrupt) {
   TempDir dir;
   writeFile(dir.file("notes.db"), std::string(8192, 'n'));
   std::string message;
-  EXPECT_EQ(errorKindOf([&] { patientCount(dir.file("notes.db")); }, &message),
+  EXPECT_EQ(storeErrorKind([&] { patientCount(dir.file("notes.db")); }, &message),
             StoreError::Kind::kCorrupt);
   EXPECT_NE(message.find("not an SQLite database"), std::string::npos) << message;
 }

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <string>
@@ -109,6 +110,19 @@ inline std::string fileBytes(const std::string& path) {
   std::ostringstream buffer;
   buffer << in.rdbuf();
   return buffer.str();
+}
+
+/// The kind of StoreError an action throws (and its message); a test failure if none.
+inline StoreError::Kind storeErrorKind(const std::function<void()>& action,
+                                       std::string* message = nullptr) {
+  try {
+    action();
+  } catch (const StoreError& e) {
+    if (message) *message = e.what();
+    return e.kind();
+  }
+  ADD_FAILURE() << "no StoreError";
+  return StoreError::Kind::kOther;
 }
 
 inline void writeFile(const std::string& path, const std::string& content) {
