@@ -15,13 +15,10 @@ PACKAGE_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 WORK_DIR="${FUZZ_WORK_DIR:-/tmp/vicc_anatomy_viz_fuzz}"
 mkdir -p "$WORK_DIR"
 
-CORE_SOURCES=(
-  anatomy_catalog data_model database_files encoded_status_json encoding_config encoding_model
-  errors examination_validator fhir_codes fhir_export fhir_import fhir_observation_reader
-  fhir_standard_codes injectivity level_mapping patient_record patient_status_service
-  record_json record_store schema_migrations sqlite_connection status_encoder time_format
-  visual_variables yaml_document yaml_reading
-)
+# The core library's sources exactly as CMakeLists.txt lists them, so the fuzzers test what
+# the package builds.
+mapfile -t CORE_SOURCES < <(sed -n '/^add_library(vicc_anatomy_viz_core/,/)/p' \
+  "$PACKAGE_DIR/CMakeLists.txt" | grep -o 'src/core/[a-z_]*\.cpp' | sed 's|src/core/||; s|\.cpp$||')
 FUZZ_SOURCES=(fuzz_model fuzz_json_import fuzz_fhir_import fuzzed_examinations fuzz_validator)
 FLAGS=(-std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
        -I"$PACKAGE_DIR/include" -DVICC_ANATOMY_VIZ_SOURCE_DIR="\"$PACKAGE_DIR\"")
