@@ -37,6 +37,9 @@ const EncodingModel& fuzzModel();
 
 // The only place the harnesses touch the examination time (its unit is about to change).
 inline TimestampUs takenAtOf(const Examination& examination) { return examination.taken_at_us; }
+inline void setTakenAt(Examination& examination, TimestampUs time) {
+  examination.taken_at_us = time;
+}
 inline void setTakenAtSeconds(Examination& examination, std::int64_t seconds) {
   examination.taken_at_us = seconds * kMicrosPerSecond;
 }

@@ -53,7 +53,7 @@ Examination FuzzedExaminations::examination() {
   Examination examination;
   examination.patient_id = nameFrom({"SDH-046", "SDH-101", "P-1"});
   examination.source = "fuzz";
-  setTakenAtSeconds(examination, seconds());
+  setTakenAt(examination, time());
   const auto count = data_.ConsumeIntegralInRange<std::size_t>(0, kMaxFindings);
   for (std::size_t i = 0; i < count && data_.remaining_bytes() > 0; ++i) {
     examination.findings.push_back(finding());
@@ -61,14 +61,16 @@ Examination FuzzedExaminations::examination() {
   return examination;
 }
 
-std::int64_t FuzzedExaminations::seconds() {
+TimestampUs FuzzedExaminations::time() {
   switch (data_.ConsumeIntegralInRange(0, 3)) {
     case 0:
-      return data_.ConsumeIntegral<std::int64_t>();
-    case 1:  // a few days around the same time, so that examinations can coincide
-      return 1678091400 + data_.ConsumeIntegralInRange(0, 3) * 86400;
+      return data_.ConsumeIntegral<TimestampUs>();
+    case 1:  // a few days around the same time (with fractions), so examinations can coincide
+      return (1678091400 + data_.ConsumeIntegralInRange(0, 3) * 86400) * kMicrosPerSecond +
+             data_.ConsumeIntegralInRange(0, 2) * 500000;
     default:
-      return data_.ConsumeIntegralInRange(kFirstSecond, kLastSecond);
+      return data_.ConsumeIntegralInRange(kFirstSecond * kMicrosPerSecond,
+                                          kLastSecond * kMicrosPerSecond + kMicrosPerSecond - 1);
   }
 }
 

@@ -24,7 +24,7 @@ class FuzzedExaminations {
   Examination examination();
   Finding finding();
   Value value(const Domain* domain);
-  std::int64_t seconds();
+  TimestampUs time();
   /// One of `names`, or (about one time in eight) arbitrary text.
   std::string nameFrom(const std::vector<std::string>& names);
   std::string arbitraryText() { return data_.ConsumeRandomLengthString(24); }

@@ -214,11 +214,13 @@ void TimePlausibility::validate() const {
 }
 
 std::int64_t wholeSeconds(TimestampUs time) {
-  return time >= 0 ? time / kMicrosPerSecond : -((-time + kMicrosPerSecond - 1) / kMicrosPerSecond);
+  // Floor division without negating (the most negative time has no positive counterpart).
+  return time / kMicrosPerSecond - (time % kMicrosPerSecond < 0 ? 1 : 0);
 }
 
 std::int64_t microsWithinSecond(TimestampUs time) {
-  return time - wholeSeconds(time) * kMicrosPerSecond;
+  const std::int64_t remainder = time % kMicrosPerSecond;
+  return remainder < 0 ? remainder + kMicrosPerSecond : remainder;
 }
 
 std::string formatTimestamp(TimestampUs time) {

@@ -1,6 +1,8 @@
 // ISO 8601 examination times, kept to the microsecond.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "vicc_anatomy_viz/time_format.hpp"
 
 namespace vicc_anatomy_viz {
@@ -90,6 +92,20 @@ TEST(TimeFormatTest, FormatsUtcWithFractionsAndRoundTrips) {
        {TimestampUs{0}, 1709164800 * kSecond + 4321, TimestampUs{-1}, -2208988800 * kSecond + 7}) {
     EXPECT_EQ(parseTimestamp(formatTimestamp(time)), time) << formatTimestamp(time);
   }
+}
+
+// Found by the validator fuzz target: the most negative time overflowed when negated.
+TEST(TimeFormatTest, ExtremeTimesFormatWithoutOverflow) {
+  const TimestampUs lowest = std::numeric_limits<TimestampUs>::min();
+  const TimestampUs highest = std::numeric_limits<TimestampUs>::max();
+  EXPECT_EQ(wholeSeconds(lowest), -9223372036855);  // -9223372036854.775808 s, floored
+  EXPECT_EQ(microsWithinSecond(lowest), 224192);
+  EXPECT_EQ(wholeSeconds(highest), 9223372036854);
+  EXPECT_EQ(microsWithinSecond(highest), 775807);
+  EXPECT_EQ(wholeSeconds(-1), -1);
+  EXPECT_EQ(microsWithinSecond(-1), 999999);
+  EXPECT_FALSE(parseTimestamp(formatTimestamp(lowest)).has_value());  // no four-digit year
+  EXPECT_FALSE(parseTimestamp(formatTimestamp(highest)).has_value());
 }
 
 }  // namespace
