@@ -101,6 +101,8 @@ class StatusEncoder {
   EncodedStructure encodeFinding(const Finding& finding) const;
   std::vector<const Finding*> usableFindings(const Examination& examination,
                                              std::vector<std::string>& notes) const;
+  /// Findings of the view's categories that usableFindings() had to leave out.
+  std::size_t unusableCount(const Examination& examination, std::size_t usable) const;
   std::vector<LegendEntry> legend(const std::map<std::string, std::size_t>& counts,
                                   const std::vector<std::string>& hidden) const;
 

@@ -214,6 +214,15 @@ json examinationBody(const Examination& examination) {
   return body;
 }
 
+/// nlohmann's parse errors quote the text last read ("last read: '9x'"), which may be a
+/// recorded value: the message keeps the position and the reason only.
+std::string withoutQuotedInput(const std::string& message) {
+  const std::size_t quoted = message.find("; last read: ");
+  if (quoted == std::string::npos) return message;
+  const std::size_t rest = message.find("'; ", quoted + 14);
+  return message.substr(0, quoted) + (rest == std::string::npos ? "" : message.substr(rest + 1));
+}
+
 /// Rejects an object that repeats a key: nlohmann keeps the last one silently.
 class DuplicateKeyCheck {
  public:
@@ -351,7 +360,7 @@ json parseJsonText(const std::string& text, const std::string& origin) {
   try {
     return json::parse(text, DuplicateKeyCheck(origin));
   } catch (const json::parse_error& e) {
-    throw ExchangeError(origin + ": invalid JSON (" + std::string(e.what()) + ")");
+    throw ExchangeError(origin + ": invalid JSON (" + withoutQuotedInput(e.what()) + ")");
   } catch (const json::out_of_range&) {
     // Not e.what(): it quotes the number, which may be a recorded value.
     throw ExchangeError(origin + ": invalid JSON (a number is too large)");

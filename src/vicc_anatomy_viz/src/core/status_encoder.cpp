@@ -209,6 +209,13 @@ bool contains(const std::vector<std::string>& list, const std::string& item) {
 
 }  // namespace
 
+std::size_t StatusEncoder::unusableCount(const Examination& examination, std::size_t usable) const {
+  const auto in_view =
+      std::count_if(examination.findings.begin(), examination.findings.end(),
+                    [&](const Finding& finding) { return view_.contains(finding.category); });
+  return static_cast<std::size_t>(in_view) - usable;
+}
+
 std::vector<const Finding*> StatusEncoder::usableFindings(const Examination& examination,
                                                           std::vector<std::string>& notes) const {
   // Records are validated when written; one that no longer fits the configuration (changed
@@ -280,6 +287,15 @@ EncodedStatus StatusEncoder::encode(const std::string& patient_id,
     status.partial_reason = examination->partial_reason;
     const AnatomyCatalog& anatomy = model_.anatomy();
     const auto usable = usableFindings(*examination, status.notes);
+    const std::size_t unusable = unusableCount(*examination, usable.size());
+    if (unusable > 0) {
+      // Shown without those findings, the status would read as better than recorded.
+      status.partial = true;
+      status.partial_reason += std::string(status.partial_reason.empty() ? "" : "; ") +
+                               std::to_string(unusable) +
+                               " recorded finding(s) not shown: they no longer fit the "
+                               "configuration";
+    }
     for (const auto& entry : view_.categories) {
       std::vector<const Finding*> findings;
       for (const Finding* finding : usable) {

@@ -70,6 +70,15 @@ TEST(RecordJsonTest, UnreadableDocumentsGiveExchangeErrors) {
   } catch (const ExchangeError& e) {
     EXPECT_NE(std::string(e.what()).find("broken.json: invalid JSON"), std::string::npos);
   }
+  try {
+    parseJsonText("{\"values\": {\"intensity\": 9x}}", "typo.json");
+    FAIL();
+  } catch (const ExchangeError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("typo.json: invalid JSON"), std::string::npos) << message;
+    EXPECT_NE(message.find("line 1, column"), std::string::npos) << message;
+    EXPECT_EQ(message.find("9x"), std::string::npos) << "quotes the input: " << message;
+  }
   EXPECT_THROW(readTextFile("/nonexistent/records.json"), ExchangeError);
 }
 

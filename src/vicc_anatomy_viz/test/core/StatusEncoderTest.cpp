@@ -293,6 +293,17 @@ TEST(StatusEncoderTest, RecordsThatNoLongerFitAreLeftOutWithANote) {
   std::size_t skipped = 0;
   for (const auto& note : status.notes) skipped += note.rfind("not shown: ", 0) == 0;
   EXPECT_EQ(skipped, 2u);
+  // What is left out is unknown, not normal: the status says it is partial.
+  EXPECT_TRUE(status.partial);
+  EXPECT_EQ(status.partial_reason,
+            "2 recorded finding(s) not shown: they no longer fit the configuration");
+  EXPECT_NE(status.structures[0].overlay_text.find("[partial examination]"), std::string::npos);
+  // Findings of categories outside the view belong to another usage, not to a gap.
+  const EncodedStatus motor =
+      StatusEncoder(shippedModel(), "motor_status")
+          .encode("TEST-1", examinationOf({finding("sensory_disorder", "dermatome_L5", Side::kLeft,
+                                                   {{"intensity", Value::number(1)}})}));
+  EXPECT_FALSE(motor.partial);
 }
 
 TEST(StatusEncoderTest, JsonCarriesEverythingTheAvatarNeeds) {
