@@ -34,6 +34,8 @@ target_compile_options(patient_status_server_rostest PRIVATE ${VICC_WARNINGS})
 target_compile_definitions(patient_status_server_rostest PRIVATE ${VICC_TEST_DEFINITIONS})
 target_link_libraries(patient_status_server_rostest vicc_anatomy_viz_ros ${catkin_LIBRARIES})
 add_dependencies(patient_status_server_rostest patient_status_server)
+# The same tests against the node as launch/patient_status_server.launch starts it.
+add_rostest(test/ros/patient_status_server_launch.test DEPENDENCIES patient_status_server_rostest)
 include(cmake/database_files_tests.cmake)
 include(cmake/fhir_conformance.cmake)
 include(cmake/fuzz_regression.cmake)

@@ -21,6 +21,8 @@ struct PatientStatusConfig {
   std::string anatomy_config;   ///< YAML anatomy catalogue
   std::string view_id = "neurological_status_sdh";
   StoreConfig store;
+  /// Examination times every write must have (no far future, no year before 1900).
+  TimePlausibility plausibility;
   void validate() const;  ///< throws std::invalid_argument naming the field
 };
 
@@ -49,7 +51,8 @@ class PatientStatusService {
   std::optional<Examination> examinationAt(const std::string& patient_id, const std::string& date);
   EncodedStatus encodedStatus(const std::string& patient_id, const std::string& date,
                               const std::vector<std::string>& hidden_categories = {});
-  /// Validates against the view and writes atomically; returns the number written.
+  /// Validates against the view (and the times against the plausibility) and writes
+  /// atomically; returns the number written.
   std::size_t record(std::vector<Examination> examinations, WriteMode mode);
 
  private:

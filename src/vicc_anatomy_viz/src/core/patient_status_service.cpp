@@ -58,6 +58,7 @@ void PatientStatusConfig::validate() const {
   if (anatomy_config.empty()) throw std::invalid_argument("anatomy_config path is empty");
   if (view_id.empty()) throw std::invalid_argument("view_id is empty");
   store.validate();
+  plausibility.validate();
 }
 
 PatientStatusService::PatientStatusService(const PatientStatusConfig& config) : config_(config) {
@@ -131,6 +132,15 @@ EncodedStatus PatientStatusService::encodedStatus(
 }
 
 std::size_t PatientStatusService::record(std::vector<Examination> examinations, WriteMode mode) {
+  std::vector<std::string> implausible;
+  for (const auto& examination : examinations) {
+    const std::string problem = config_.plausibility.problem(examination.taken_at_us);
+    if (!problem.empty()) {
+      implausible.push_back("patient " + examination.patient_id +
+                            ": implausible examination time: " + problem);
+    }
+  }
+  if (!implausible.empty()) throw ValidationError(implausible);
   const ValidatedBatch batch = validator_->validate(std::move(examinations));
   try {
     store().write(batch, mode);

@@ -36,6 +36,9 @@ PatientStatusConfig readServerConfig(const ros::NodeHandle& private_nh) {
   private_nh.param<std::string>("view", config.view_id, config.view_id);
   private_nh.param<int>("busy_timeout_ms", config.store.busy_timeout_ms,
                         config.store.busy_timeout_ms);
+  int max_future_s = static_cast<int>(config.plausibility.max_future_seconds);
+  private_nh.param<int>("max_future_s", max_future_s, max_future_s);
+  config.plausibility.max_future_seconds = max_future_s;
   config.validate();
   return config;
 }

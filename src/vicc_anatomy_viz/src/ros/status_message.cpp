@@ -128,9 +128,6 @@ Examination examinationFromRequest(const EncodingModel& model, const std::string
   const auto time = parseTime(taken_at, &why);
   if (!time) {
     problems.push_back("taken_at '" + taken_at + "' is not an ISO 8601 date or date-time: " + why);
-  } else if (const std::string implausible = TimePlausibility().problem(time->us);
-             !implausible.empty()) {
-    problems.push_back("taken_at: implausible examination time: " + implausible);
   } else {
     examination.taken_at_us = time->us;
   }

@@ -37,6 +37,7 @@ PatientStatusConfig serviceConfig(const CommandLine& line) {
   config.store.path = line.option("--db", defaultDatabasePath());
   config.store.busy_timeout_ms = line.integerOption("--busy-timeout", 5000);
   config.store.read_only = cli::kReadCommands.count(line.command) > 0;
+  config.plausibility.max_future_seconds = line.integerOption("--max-future", 24 * 3600);
   return config;
 }
 

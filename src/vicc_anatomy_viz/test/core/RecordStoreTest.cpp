@@ -395,5 +395,28 @@ TEST(RecordStoreTest, ReadOnlyStoreNeverCreatesAndNeverWrites) {
   EXPECT_THROW(reader.write(validated({figurePatient()[1]})), StoreError);
 }
 
+TEST(RecordStoreTest, TheServiceRejectsImplausibleTimesOnEveryWritePath) {
+  TempDir dir;
+  PatientStatusConfig config;
+  config.encoding_config = test::encodingConfigPath();
+  config.anatomy_config = test::anatomyConfigPath();
+  config.store = storeAt(dir.file("p.db"));
+  config.plausibility.now = *parseTimestamp("2026-12-01T12:00:00Z");
+  config.plausibility.max_future_seconds = 3600;
+  PatientStatusService service(config);
+  Examination future = figurePatient()[0];
+  future.taken_at_us = *parseTimestamp("2026-12-01T14:00:00Z");
+  try {
+    service.record({future}, WriteMode::kRejectExisting);
+    FAIL() << "a time two hours ahead was recorded";
+  } catch (const ValidationError& e) {
+    EXPECT_NE(std::string(e.what()).find("patient SDH-046: implausible examination time"),
+              std::string::npos)
+        << e.what();
+  }
+  future.taken_at_us = *parseTimestamp("2026-12-01T12:30:00Z");
+  EXPECT_EQ(service.record({future}, WriteMode::kRejectExisting), 1u);
+}
+
 }  // namespace
 }  // namespace vicc_anatomy_viz
