@@ -29,9 +29,11 @@ std::vector<Examination> byPatientAndTime(std::vector<Examination> examinations)
 void checkJsonRoundTrip(const std::vector<Examination>& validated) {
   std::vector<Examination> imported;
   try {
-    // Plausibility (no times far in the future) is the import's policy, not the validator's:
-    // the round trip checks the format with the widest window.
+    // Plausibility (no times far in the future or before 1900) is the import's and the
+    // service's policy, not the validator's: the round trip checks the format over every
+    // time the format can write (years 0000-9999).
     JsonImportOptions options;
+    options.plausibility.min_year = 0;
     options.plausibility.max_future_seconds = 1000000000000;
     imported = examinationsFromJson(parseJsonText(recordsToJson(validated).dump(), "export"),
                                     "json", nullptr, options);

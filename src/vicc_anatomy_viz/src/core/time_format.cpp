@@ -209,7 +209,7 @@ std::string TimePlausibility::problem(TimestampUs time) const {
 }
 
 void TimePlausibility::validate() const {
-  if (min_year < 1 || min_year > 9999) throw std::invalid_argument("min_year must be 1..9999");
+  if (min_year < 0 || min_year > 9999) throw std::invalid_argument("min_year must be 0..9999");
   if (max_future_seconds < 0) throw std::invalid_argument("max_future_seconds must be >= 0");
 }
 
