@@ -1,6 +1,7 @@
 #include "vicc_anatomy_viz/encoded_status_json.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "vicc_anatomy_viz/time_format.hpp"
 
@@ -25,7 +26,7 @@ json toJson(const EncodedStructure& entry) {
                     {"level", prop.level},         {"level_count", prop.level_count},
                     {"normal", prop.normal}};
     if (!prop.derived_value.empty()) encoded["derived_value"] = prop.derived_value;
-    properties.push_back(encoded);
+    properties.push_back(std::move(encoded));
   }
   json texture = nullptr;
   if (!entry.texture_id.empty()) {
@@ -46,10 +47,10 @@ json toJson(const EncodedStructure& entry) {
                                rounded(entry.brightness)})},
           {"intensity_level", entry.intensity_level},
           {"intensity_levels", entry.intensity_levels},
-          {"texture", texture},
+          {"texture", std::move(texture)},
           {"proxy", entry.proxy},
           {"overlay_text", entry.overlay_text},
-          {"properties", properties},
+          {"properties", std::move(properties)},
           {"alternation_group", entry.alternation_group}};
 }
 
@@ -87,9 +88,9 @@ nlohmann::json toJson(const EncodedStatus& status) {
            status.has_examination ? json(toString(status.examination_status)) : json(nullptr)},
           {"examination_partial", status.partial},
           {"partial_reason", status.partial_reason},
-          {"structures", structures},
-          {"alternations", alternations},
-          {"legend", legend},
+          {"structures", std::move(structures)},
+          {"alternations", std::move(alternations)},
+          {"legend", std::move(legend)},
           {"hidden_categories", status.hidden_categories},
           {"notes", status.notes}};
 }
