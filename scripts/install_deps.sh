@@ -20,7 +20,9 @@ PACKAGES=(
   # data and formats
   libsqlite3-dev libyaml-dev libyaml-cpp-dev pkg-config nlohmann-json3-dev libtinyxml2-dev libassimp-dev assimp-testmodels
   python3-yaml
-  libpotrace-dev libpng-dev
+  libpotrace-dev libpng-dev libpolyclipping-dev
+  # SVG reference renderer for the glyph fidelity benchmark and tests
+  librsvg2-bin
   # tests
   libgtest-dev googletest xvfb xauth imagemagick clang libclang-rt-14-dev
   # FHIR R4 conformance test: JSON Schema validation of the export
