@@ -15,14 +15,15 @@ namespace {
 constexpr int kStations = 18;  // along the axis, the two ends are the spindle's tips
 constexpr int kRingPoints = 14;
 constexpr float kProfileExponent = 0.6f;  // < 1: a full belly tapering into short tendons
-constexpr int kMaxShrinkSteps = 24;
+constexpr int kBisectionSteps = 14;
 
 /// One station of the spindle: the skin cross-section and the ring placed in it.
 struct Station {
   SectionPlane plane;
-  Eigen::Vector2f centre;  ///< the ring centre in plane coordinates
-  Eigen::Vector2f radial;  ///< unit, towards the azimuth
-  float skin_radius = 0;   ///< axis to skin along `radial`
+  SectionLoop skin_section;  ///< the skin's contour around the axis
+  Eigen::Vector2f centre;    ///< the ring centre in plane coordinates
+  Eigen::Vector2f radial;    ///< unit, towards the azimuth
+  float skin_radius = 0;     ///< axis to skin along `radial`
 };
 
 Station stationAt(const TriangleMesh& skin, const BoneFrame& bone, const GeneratedShape& shape,
@@ -31,9 +32,11 @@ Station stationAt(const TriangleMesh& skin, const BoneFrame& bone, const Generat
   station.plane = SectionPlane::through(bone.at(fraction), bone.axis, bone.anterior);
   const std::vector<SectionLoop> loops = sliceMesh(skin, station.plane);
   const SectionLoop* loop = loopContaining(loops, Eigen::Vector2f::Zero());
-  if (!loop)
+  if (!loop) {
     throw ConfigError(what + ": the " + shape.bone + " axis leaves the skin at " +
                       std::to_string(fraction));
+  }
+  station.skin_section = *loop;
   const Eigen::Vector3f direction = bone.direction(shape.azimuth);
   station.radial =
       Eigen::Vector2f(direction.dot(station.plane.u), direction.dot(station.plane.v)).normalized();
@@ -43,23 +46,30 @@ Station stationAt(const TriangleMesh& skin, const BoneFrame& bone, const Generat
 }
 
 /// The ring of a station, shrunk until every point is `margin` inside the skin section.
-std::vector<Eigen::Vector3f> ringAt(const TriangleMesh& skin, const Station& station,
-                                    const GeneratedShape& shape, float profile, float margin) {
-  const std::vector<SectionLoop> loops = sliceMesh(skin, station.plane);
-  const SectionLoop* loop = loopContaining(loops, Eigen::Vector2f::Zero());
+std::vector<Eigen::Vector3f> ringAt(const Station& station, const GeneratedShape& shape,
+                                    float profile, float margin) {
+  const SectionLoop* loop = &station.skin_section;
   const Eigen::Vector2f tangential(-station.radial.y(), station.radial.x());
-  float radial_half = shape.thickness * station.skin_radius * profile;
+  const float full = shape.thickness * station.skin_radius * profile;
   std::vector<Eigen::Vector2f> ring(kRingPoints);
-  for (int attempt = 0; attempt <= kMaxShrinkSteps; ++attempt) {
-    bool inside = true;
+  const auto fits = [&](float radial_half) {
     for (int k = 0; k < kRingPoints; ++k) {
       const float angle = 2.0f * static_cast<float>(M_PI) * k / kRingPoints;
       ring[k] = station.centre + radial_half * std::cos(angle) * station.radial +
                 shape.width * radial_half * std::sin(angle) * tangential;
-      inside = inside && loop->contains(ring[k]) && loop->distanceToContour(ring[k]) >= margin;
+      if (!loop->contains(ring[k]) || loop->distanceToContour(ring[k]) < margin) return false;
     }
-    if (inside) break;
-    radial_half *= 0.85f;
+    return true;
+  };
+  // The largest ring that fits (bisection: a continuous result, so that left and right
+  // stay mirror images).
+  float low = 0, high = full;
+  if (!fits(high)) {
+    for (int step = 0; step < kBisectionSteps; ++step) {
+      const float middle = (low + high) / 2;
+      (fits(middle) ? low : high) = middle;
+    }
+    fits(low);
   }
   std::vector<Eigen::Vector3f> lifted;
   for (const Eigen::Vector2f& point : ring) lifted.push_back(station.plane.lift(point));
@@ -84,7 +94,7 @@ TriangleMesh generateSpindle(const TriangleMesh& skin, const BodyLandmarks& land
       continue;
     }
     const float profile = std::pow(std::sin(static_cast<float>(M_PI) * t), kProfileExponent);
-    for (const Eigen::Vector3f& point : ringAt(skin, station, shape, profile, margin)) {
+    for (const Eigen::Vector3f& point : ringAt(station, shape, profile, margin)) {
       mesh.vertices.push_back(point);
     }
   }
