@@ -235,22 +235,6 @@ void keepConnected(const TriangleMesh& skin, const std::vector<int>& key_triangl
   }
 }
 
-int nearestTriangle(const TriangleMesh& skin, const Eigen::Vector3f& point) {
-  int best = 0;
-  float best_distance = kUnreached;
-  for (std::size_t t = 0; t < skin.triangles.size(); ++t) {
-    const Eigen::Vector3i& triangle = skin.triangles[t];
-    const Eigen::Vector3f centre =
-        (skin.vertices[triangle[0]] + skin.vertices[triangle[1]] + skin.vertices[triangle[2]]) / 3;
-    const float d = (centre - point).squaredNorm();
-    if (d < best_distance) {
-      best_distance = d;
-      best = static_cast<int>(t);
-    }
-  }
-  return best;
-}
-
 }  // namespace
 
 const std::vector<std::string>& dermatomeLevels() {
@@ -267,6 +251,7 @@ std::vector<SkinRegion> labelDermatomes(const TriangleMesh& skin, const BodyLand
                                         const AnatomyCatalog& catalog) {
   const SkinSegmentation segmentation = segmentSkin(skin, landmarks);
   const TriangleGraph graph = bandMetricGraph(skin, landmarks, segmentation);
+  const TriangleGrid grid(skin);
   std::vector<SkinRegion> regions;
   std::vector<LabelZone> zones;
   std::vector<int> owner(skin.triangles.size(), -1), key_triangle;
@@ -280,9 +265,9 @@ std::vector<SkinRegion> labelDermatomes(const TriangleMesh& skin, const BodyLand
       regions.push_back({id, side, catalog.displayName(*structure, side), {}});
       zones.push_back({level.parts, side, level.max_reach});
       const std::vector<Eigen::Vector3f> seeds =
-          dermatome_map::seedPoints(skin, landmarks, segmentation, level, side);
+          dermatome_map::seedPoints(skin, grid, landmarks, segmentation, level, side);
       for (std::size_t k = 0; k < seeds.size(); ++k) {
-        const int triangle = nearestTriangle(skin, seeds[k]);
+        const int triangle = grid.nearestTriangle(seeds[k]);
         if (k == 0) key_triangle.push_back(triangle);
         // A band seed off the level's zone (a ray that missed its limb) is dropped; seeds of
         // different levels on one triangle: the nearest to its centre wins.

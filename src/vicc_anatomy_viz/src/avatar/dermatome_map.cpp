@@ -22,7 +22,7 @@ constexpr float kRingRiseTowardsSpine = 0.03f;
 
 /// A skin point seen from the bone axis. On the forearm the direction turns from the elbow's
 /// frame into the hand's (pronation moves the radius round the ulna).
-std::optional<Eigen::Vector3f> axisPoint(const TriangleMesh& skin, const BodyLandmarks& landmarks,
+std::optional<Eigen::Vector3f> axisPoint(const TriangleGrid& grid, const BodyLandmarks& landmarks,
                                          const std::string& segment, Side side, float fraction,
                                          float azimuth) {
   const BoneFrame bone = landmarks.bone(segment, side);
@@ -32,19 +32,20 @@ std::optional<Eigen::Vector3f> axisPoint(const TriangleMesh& skin, const BodyLan
     direction = (1 - t) * direction + t * landmarks.bone("hand", side).direction(azimuth);
     direction -= direction.dot(bone.axis) * bone.axis;
   }
-  return castRay(skin, bone.at(fraction), direction);
+  return grid.castRay(bone.at(fraction), direction);
 }
 
 /// The half ring of a trunk level: from the front midline round the side to the spine.
-bool onTrunk(const TriangleMesh& skin, const SkinSegmentation& segmentation,
-             const Eigen::Vector3f& point) {
-  const BodyPart part = segmentation.part[nearestVertex(skin, point)];
+bool onTrunk(const TriangleMesh& skin, const TriangleGrid& grid,
+             const SkinSegmentation& segmentation, const Eigen::Vector3f& point) {
+  const BodyPart part = segmentation.part[skin.triangles[grid.nearestTriangle(point)][0]];
   return part == BodyPart::kTrunk || part == BodyPart::kNeck || part == BodyPart::kHead;
 }
 
 /// The half ring of a trunk level: from the front midline round the side to the spine. A ray
 /// that meets the arm is lowered (at most `max_drop`) until it meets the chest wall.
-std::vector<Eigen::Vector3f> ringSeeds(const TriangleMesh& skin, const BodyLandmarks& landmarks,
+std::vector<Eigen::Vector3f> ringSeeds(const TriangleMesh& skin, const TriangleGrid& grid,
+                                       const BodyLandmarks& landmarks,
                                        const SkinSegmentation& segmentation, float front_z,
                                        Side side, float max_drop) {
   std::vector<Eigen::Vector3f> seeds;
@@ -59,8 +60,8 @@ std::vector<Eigen::Vector3f> ringSeeds(const TriangleMesh& skin, const BodyLandm
     const Eigen::Vector3f direction(std::cos(angle), y, 0);
     for (float drop = 0; drop <= max_drop; drop += kRingDropStep) {
       const Eigen::Vector3f origin(trunk->centroid.x(), 0, front_z + rise - drop);
-      const std::optional<Eigen::Vector3f> hit = castRay(skin, origin, direction);
-      if (hit && onTrunk(skin, segmentation, *hit)) {
+      const std::optional<Eigen::Vector3f> hit = grid.castRay(origin, direction);
+      if (hit && onTrunk(skin, grid, segmentation, *hit)) {
         seeds.push_back(*hit);
         break;
       }
@@ -176,7 +177,8 @@ const std::vector<LevelMap>& levels() {
   return map;
 }
 
-std::vector<Eigen::Vector3f> seedPoints(const TriangleMesh& skin, const BodyLandmarks& landmarks,
+std::vector<Eigen::Vector3f> seedPoints(const TriangleMesh& skin, const TriangleGrid& grid,
+                                        const BodyLandmarks& landmarks,
                                         const SkinSegmentation& segmentation, const LevelMap& level,
                                         Side side) {
   const Eigen::Vector3f key = landmarks.point("key_" + level.level + "_" + toString(side));
@@ -186,15 +188,15 @@ std::vector<Eigen::Vector3f> seedPoints(const TriangleMesh& skin, const BodyLand
       const float t = static_cast<float>(k) / (kSamplesPerAxis - 1);
       const float fraction = axis.from + t * (axis.to - axis.from);
       const float azimuth = axis.azimuth_from + t * (axis.azimuth_to - axis.azimuth_from);
-      if (const auto hit = axisPoint(skin, landmarks, axis.segment, side, fraction, azimuth)) {
+      if (const auto hit = axisPoint(grid, landmarks, axis.segment, side, fraction, azimuth)) {
         seeds.push_back(*hit);
       }
     }
   }
   if (level.trunk_ring) {
     const std::vector<Eigen::Vector3f> ring =
-        ringSeeds(skin, landmarks, segmentation, ringHeight(landmarks, level.level, side), side,
-                  level.ring_under_axilla ? kRingMaxDropUnderAxilla : 0.0f);
+        ringSeeds(skin, grid, landmarks, segmentation, ringHeight(landmarks, level.level, side),
+                  side, level.ring_under_axilla ? kRingMaxDropUnderAxilla : 0.0f);
     const std::size_t ring_start = seeds.size();
     seeds.insert(seeds.end(), ring.begin(), ring.end());
     // A key point off its ring (occiput, acromion, axilla, groin) is joined to the ring's

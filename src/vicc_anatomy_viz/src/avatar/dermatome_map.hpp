@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "vicc_anatomy_viz/avatar/skin_segmentation.hpp"
+#include "vicc_anatomy_viz/avatar/triangle_grid.hpp"
 
 namespace vicc_anatomy_viz::avatar::dermatome_map {
 
@@ -34,7 +35,8 @@ const std::vector<LevelMap>& levels();
 
 /// Seed points on the skin for one level and side: the key point, the band axes sampled and,
 /// for trunk levels, the half ring from the front midline round to the spine.
-std::vector<Eigen::Vector3f> seedPoints(const TriangleMesh& skin, const BodyLandmarks& landmarks,
+std::vector<Eigen::Vector3f> seedPoints(const TriangleMesh& skin, const TriangleGrid& grid,
+                                        const BodyLandmarks& landmarks,
                                         const SkinSegmentation& segmentation, const LevelMap& level,
                                         Side side);
 

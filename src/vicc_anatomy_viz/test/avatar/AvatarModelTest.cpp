@@ -96,6 +96,12 @@ TEST(AvatarModelTest, LeftAndRightStructuresAreMirrorImages) {
     if (left.side != Side::kLeft) continue;
     const AvatarStructure* right = model.structure(left.structure_id, Side::kRight);
     ASSERT_NE(right, nullptr) << left.structure_id;
+    // The patient's left is +y (a finding on the wrong side is the worst error).
+    Eigen::Vector3f left_centre = Eigen::Vector3f::Zero(), right_centre = Eigen::Vector3f::Zero();
+    for (const Eigen::Vector3f& v : left.mesh.vertices) left_centre += v;
+    for (const Eigen::Vector3f& v : right->mesh.vertices) right_centre += v;
+    EXPECT_GT(left_centre.y(), 0) << left.structure_id;
+    EXPECT_LT(right_centre.y(), 0) << left.structure_id;
     ASSERT_EQ(right->mesh.vertices.size(), left.mesh.vertices.size());
     // The mirror image of every left vertex is (nearly) a right vertex; the ring order is
     // reversed by the mirroring, so vertices are matched by position.

@@ -9,7 +9,18 @@
 
 namespace vicc_anatomy_viz::avatar {
 
-enum class BodyPart { kHead, kFace, kNeck, kTrunk, kUpperArm, kForearm, kHand, kThigh, kShank, kFoot };
+enum class BodyPart {
+  kHead,
+  kFace,
+  kNeck,
+  kTrunk,
+  kUpperArm,
+  kForearm,
+  kHand,
+  kThigh,
+  kShank,
+  kFoot
+};
 
 const char* toString(BodyPart part);
 
