@@ -39,3 +39,12 @@ add_rostest(test/ros/patient_status_server_launch.test DEPENDENCIES patient_stat
 include(cmake/database_files_tests.cmake)
 include(cmake/fhir_conformance.cmake)
 include(cmake/fuzz_regression.cmake)
+
+# The avatar model on the default MakeHuman skin (built once per test binary, ~1 s).
+catkin_add_gtest(vicc_anatomy_viz_avatar_test
+  test/avatar/AvatarManifestTest.cpp
+  test/avatar/AvatarModelTest.cpp
+  test/avatar/DermatomeLabellingTest.cpp)
+target_compile_options(vicc_anatomy_viz_avatar_test PRIVATE ${VICC_WARNINGS})
+target_compile_definitions(vicc_anatomy_viz_avatar_test PRIVATE ${VICC_TEST_DEFINITIONS})
+target_link_libraries(vicc_anatomy_viz_avatar_test vicc_anatomy_viz_avatar gtest_main)
