@@ -28,3 +28,19 @@ install(TARGETS vicc_anatomy_viz_rviz
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 install(FILES plugin_description.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
+
+# vicc_avatar_snapshot: the real rviz with the plugin, off-line (also used by the rostest and
+# the FPS benchmark through this library).
+add_library(vicc_avatar_snapshot_lib STATIC
+  src/tools/vicc_avatar_snapshot_environment.cpp
+  src/tools/vicc_avatar_snapshot_options.cpp
+  src/tools/vicc_avatar_snapshot_renderer.cpp
+)
+target_compile_options(vicc_avatar_snapshot_lib PRIVATE ${VICC_WARNINGS})
+target_include_directories(vicc_avatar_snapshot_lib PUBLIC src/tools)
+target_link_libraries(vicc_avatar_snapshot_lib PUBLIC vicc_anatomy_viz_rviz ${X11_LIBRARIES})
+
+add_executable(vicc_avatar_snapshot src/tools/vicc_avatar_snapshot.cpp)
+target_compile_options(vicc_avatar_snapshot PRIVATE ${VICC_WARNINGS})
+target_link_libraries(vicc_avatar_snapshot vicc_avatar_snapshot_lib vicc_anatomy_viz_ros)
+install(TARGETS vicc_avatar_snapshot RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

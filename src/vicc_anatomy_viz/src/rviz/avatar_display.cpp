@@ -17,6 +17,7 @@
 #include "vicc_anatomy_viz/patient_status_service.hpp"
 #include "vicc_anatomy_viz/rviz/avatar_visual.hpp"
 #include "vicc_anatomy_viz/rviz/encoded_status_conversion.hpp"
+#include "vicc_anatomy_viz/rviz/ogre_camera.hpp"
 #include "vicc_anatomy_viz/rviz/screen_overlay.hpp"
 
 namespace vicc_anatomy_viz::rviz_plugin {
@@ -32,19 +33,6 @@ std::string joinWarnings(const std::vector<std::string>& warnings) {
   if (warnings.size() > kShownWarnings)
     text << "\n... " << warnings.size() - kShownWarnings << " more";
   return text.str();
-}
-
-avatar_view::CameraModel cameraModel(const Ogre::Camera& camera) {
-  avatar_view::CameraModel model;
-  const Ogre::Matrix4& view = camera.getViewMatrix();
-  const Ogre::Matrix4& projection = camera.getProjectionMatrix();
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) {
-      model.view(r, c) = view[r][c];
-      model.projection(r, c) = projection[r][c];
-    }
-  }
-  return model;
 }
 
 }  // namespace
@@ -138,6 +126,7 @@ void AvatarDisplay::updateTopic() {
 }
 
 void AvatarDisplay::updateModel() {
+  model_error_.clear();
   try {
     const std::string manifest = manifest_property_->getStdString();
     const std::string catalog = catalog_property_->getStdString();
@@ -151,6 +140,7 @@ void AvatarDisplay::updateModel() {
                   .arg(model_->skin_regions.size()));
   } catch (const std::exception& error) {
     model_.reset();
+    model_error_ = error.what();
     setStatus(rviz::StatusProperty::Error, "Model", error.what());
   }
   if (visual_) visual_->setModel(model_);

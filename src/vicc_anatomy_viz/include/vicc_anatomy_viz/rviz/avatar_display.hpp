@@ -44,6 +44,7 @@ class AvatarDisplay : public rviz::Display {
   /// For tools embedding the display (vicc_avatar_snapshot, the rostest): the loaded model
   /// (null until loaded), how many statuses were drawn, and the last one's draw state.
   const avatar::AvatarModel* model() const { return model_.get(); }
+  const std::string& modelError() const { return model_error_; }
   unsigned drawnStatusCount() const { return drawn_status_count_; }
   const avatar_view::AvatarDrawState& drawState() const { return draw_state_; }
   /// Draws `msg` as if it had arrived on the topic.
@@ -77,6 +78,7 @@ class AvatarDisplay : public rviz::Display {
 
   ros::Subscriber subscriber_;
   std::shared_ptr<const avatar::AvatarModel> model_;
+  std::string model_error_;  ///< why the model did not load, "" when it did
   std::unique_ptr<AvatarVisual> visual_;
   std::unique_ptr<ScreenOverlay> legend_;
   std::unique_ptr<ScreenOverlay> selection_;
