@@ -48,3 +48,11 @@ catkin_add_gtest(vicc_anatomy_viz_avatar_view_test
   test/avatar_view/ProceduralTextureTest.cpp)
 target_compile_options(vicc_anatomy_viz_avatar_view_test PRIVATE ${VICC_WARNINGS})
 target_link_libraries(vicc_anatomy_viz_avatar_view_test vicc_anatomy_viz_avatar_view gtest_main)
+
+# The AvatarDisplay in the real rviz under Xvfb (xvfb-run is the test's launch-prefix).
+add_rostest_gtest(avatar_display_rostest test/rviz/avatar_display.test
+  test/rviz/AvatarDisplayRostest.cpp)
+target_compile_options(avatar_display_rostest PRIVATE ${VICC_WARNINGS})
+target_compile_definitions(avatar_display_rostest PRIVATE ${VICC_TEST_DEFINITIONS})
+target_link_libraries(avatar_display_rostest vicc_avatar_snapshot_lib ${catkin_LIBRARIES})
+add_dependencies(avatar_display_rostest patient_status_server vicc_anatomy_viz_rviz)
