@@ -39,3 +39,4 @@ add_rostest(test/ros/patient_status_server_launch.test DEPENDENCIES patient_stat
 include(cmake/database_files_tests.cmake)
 include(cmake/fhir_conformance.cmake)
 include(cmake/fuzz_regression.cmake)
+include(cmake/patient_panel_tests.cmake)
