@@ -102,7 +102,7 @@ SettingsReading settingsFromKeyValues(const KeyValues& values) {
     if (value.empty() || parseTime(value, &problem)) {
       reading.settings.date = value;
     } else {
-      reject(kDateKey, *date, "is not an ISO 8601 date: " + problem + " (using the latest)");
+      reject(kDateKey, *date, "is rejected: " + problem + " (using the latest)");
     }
   }
   if (const auto* hidden = find(values, kHiddenCategoriesKey)) {
