@@ -35,3 +35,4 @@ install(TARGETS vicc_anatomy_viz_panel_logic vicc_anatomy_viz_rviz_panel
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 install(FILES plugin_description.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 install(DIRECTORY rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
+install(PROGRAMS scripts/avatar_sample_db DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)

@@ -16,7 +16,9 @@ add_rostest_gtest(patient_panel_rostest test/panel/patient_panel.test
 target_include_directories(patient_panel_rostest SYSTEM PRIVATE
   ${rviz_INCLUDE_DIRS} ${pluginlib_INCLUDE_DIRS})
 target_link_libraries(patient_panel_rostest ${rviz_LIBRARIES} ${pluginlib_LIBRARIES} Qt5::Widgets)
-foreach(test_target avatar_launch_rostest patient_panel_rostest)
+# rviz itself under Xvfb loads the panel from a configuration with a saved selection.
+add_rostest_gtest(avatar_rviz_rostest test/panel/avatar_rviz.test test/panel/AvatarRvizRostest.cpp)
+foreach(test_target avatar_launch_rostest patient_panel_rostest avatar_rviz_rostest)
   target_compile_options(${test_target} PRIVATE ${VICC_WARNINGS})
   target_link_libraries(${test_target} ${catkin_LIBRARIES})
   add_dependencies(${test_target} patient_status_server vicc_patient vicc_anatomy_viz_rviz_panel
