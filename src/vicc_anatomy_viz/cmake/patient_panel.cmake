@@ -1,6 +1,7 @@
 # The patient panel (thesis 4.4.1, Fig. 4.7A): a Qt-free logic library (timeline, category
 # filter, patient list, configuration) and the rviz::Panel plugin in a library of its own, so
-# that Qt and rviz stay out of the core, the server and the CLI.
+# that Qt and rviz stay out of the core, the server and the CLI. Its plugin_description.xml entry
+# sits next to the AvatarDisplay's (rviz_plugins.cmake installs the file).
 add_library(vicc_anatomy_viz_panel_logic
   src/panel_logic/category_filter_state.cpp
   src/panel_logic/panel_settings.cpp
@@ -33,6 +34,5 @@ add_dependencies(vicc_anatomy_viz_rviz_panel ${catkin_EXPORTED_TARGETS})
 install(TARGETS vicc_anatomy_viz_panel_logic vicc_anatomy_viz_rviz_panel
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
-install(FILES plugin_description.xml DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 install(DIRECTORY rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 install(PROGRAMS scripts/avatar_sample_db DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)

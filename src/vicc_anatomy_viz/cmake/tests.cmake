@@ -39,4 +39,15 @@ add_rostest(test/ros/patient_status_server_launch.test DEPENDENCIES patient_stat
 include(cmake/database_files_tests.cmake)
 include(cmake/fhir_conformance.cmake)
 include(cmake/fuzz_regression.cmake)
+
+# The avatar's view logic on a synthetic avatar (no rviz, no display).
+catkin_add_gtest(vicc_anatomy_viz_avatar_view_test
+  test/avatar_view/AlternationTest.cpp
+  test/avatar_view/DrawStateTest.cpp
+  test/avatar_view/OcclusionTest.cpp
+  test/avatar_view/ProceduralTextureTest.cpp)
+target_compile_options(vicc_anatomy_viz_avatar_view_test PRIVATE ${VICC_WARNINGS})
+target_link_libraries(vicc_anatomy_viz_avatar_view_test vicc_anatomy_viz_avatar_view gtest_main)
+
+# The patient panel: its logic, avatar.launch, the plugin under Xvfb.
 include(cmake/patient_panel_tests.cmake)

@@ -13,7 +13,7 @@
 #include <rviz/config.h>
 #include <pluginlib/class_list_macros.hpp>
 
-namespace vicc_anatomy_viz::rviz_plugins {
+namespace vicc_anatomy_viz::rviz_plugin {
 
 namespace {
 
@@ -269,6 +269,6 @@ void PatientPanel::showMessage(const QString& text, bool problem) {
   message_label_->setStyleSheet(problem ? "color: #b00020;" : "");
 }
 
-}  // namespace vicc_anatomy_viz::rviz_plugins
+}  // namespace vicc_anatomy_viz::rviz_plugin
 
-PLUGINLIB_EXPORT_CLASS(vicc_anatomy_viz::rviz_plugins::PatientPanel, rviz::Panel)
+PLUGINLIB_EXPORT_CLASS(vicc_anatomy_viz::rviz_plugin::PatientPanel, rviz::Panel)

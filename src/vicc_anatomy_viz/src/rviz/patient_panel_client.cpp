@@ -7,7 +7,7 @@
 #include <vicc_msgs/ListPatients.h>
 #include <vicc_msgs/SelectPatient.h>
 
-namespace vicc_anatomy_viz::rviz_plugins {
+namespace vicc_anatomy_viz::rviz_plugin {
 
 panel::ShownStatus toShownStatus(const vicc_msgs::EncodedStatus& msg) {
   panel::ShownStatus shown;
@@ -39,8 +39,8 @@ PatientServerClient::~PatientServerClient() {
 void PatientServerClient::registerMetaTypes() {
   qRegisterMetaType<panel::SelectionRequest>("vicc_anatomy_viz::panel::SelectionRequest");
   qRegisterMetaType<panel::ShownStatus>("vicc_anatomy_viz::panel::ShownStatus");
-  qRegisterMetaType<SelectionResult>("vicc_anatomy_viz::rviz_plugins::SelectionResult");
-  qRegisterMetaType<PatientList>("vicc_anatomy_viz::rviz_plugins::PatientList");
+  qRegisterMetaType<SelectionResult>("vicc_anatomy_viz::rviz_plugin::SelectionResult");
+  qRegisterMetaType<PatientList>("vicc_anatomy_viz::rviz_plugin::PatientList");
 }
 
 void PatientServerClient::connectTo(const QString& server) {
@@ -129,4 +129,4 @@ void PatientServerClient::select(const panel::SelectionRequest& request, bool le
   Q_EMIT selected(result);
 }
 
-}  // namespace vicc_anatomy_viz::rviz_plugins
+}  // namespace vicc_anatomy_viz::rviz_plugin

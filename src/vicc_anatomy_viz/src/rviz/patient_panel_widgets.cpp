@@ -12,7 +12,7 @@
 
 #include "vicc_anatomy_viz/rviz/patient_panel.hpp"
 
-namespace vicc_anatomy_viz::rviz_plugins {
+namespace vicc_anatomy_viz::rviz_plugin {
 
 namespace {
 
@@ -93,4 +93,4 @@ void PatientPanel::refreshCategories() {
   }
 }
 
-}  // namespace vicc_anatomy_viz::rviz_plugins
+}  // namespace vicc_anatomy_viz::rviz_plugin

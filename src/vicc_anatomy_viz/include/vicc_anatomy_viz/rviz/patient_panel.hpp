@@ -27,7 +27,7 @@ class QPushButton;
 class QSlider;
 class QVBoxLayout;
 
-namespace vicc_anatomy_viz::rviz_plugins {
+namespace vicc_anatomy_viz::rviz_plugin {
 
 class PatientPanel : public rviz::Panel {
   Q_OBJECT
@@ -49,9 +49,9 @@ class PatientPanel : public rviz::Panel {
   void onRetry();
 
   void onReachability(bool reachable, const QString& message);
-  void onPatientsListed(const vicc_anatomy_viz::rviz_plugins::PatientList& patients);
+  void onPatientsListed(const vicc_anatomy_viz::rviz_plugin::PatientList& patients);
   void onDatesListed(const QString& patient, const QStringList& dates, const QString& problem);
-  void onSelected(const vicc_anatomy_viz::rviz_plugins::SelectionResult& result);
+  void onSelected(const vicc_anatomy_viz::rviz_plugin::SelectionResult& result);
   void onStatusPublished(const vicc_anatomy_viz::panel::ShownStatus& status);
 
  private:
@@ -87,4 +87,4 @@ class PatientPanel : public rviz::Panel {
   QLabel* message_label_ = nullptr;
 };
 
-}  // namespace vicc_anatomy_viz::rviz_plugins
+}  // namespace vicc_anatomy_viz::rviz_plugin

@@ -20,7 +20,7 @@
 
 #include "vicc_anatomy_viz/panel_logic/patient_panel_state.hpp"
 
-namespace vicc_anatomy_viz::rviz_plugins {
+namespace vicc_anatomy_viz::rviz_plugin {
 
 struct SelectionResult {
   bool success = false;
@@ -55,9 +55,9 @@ class PatientServerClient : public QObject {
  Q_SIGNALS:
   /// After every call: whether the server answered, and if not, why.
   void reachabilityChanged(bool reachable, const QString& message);
-  void patientsListed(const vicc_anatomy_viz::rviz_plugins::PatientList& patients);
+  void patientsListed(const vicc_anatomy_viz::rviz_plugin::PatientList& patients);
   void datesListed(const QString& patient, const QStringList& dates, const QString& problem);
-  void selected(const vicc_anatomy_viz::rviz_plugins::SelectionResult& result);
+  void selected(const vicc_anatomy_viz::rviz_plugin::SelectionResult& result);
   void statusPublished(const vicc_anatomy_viz::panel::ShownStatus& status);
 
  private:
@@ -74,9 +74,9 @@ class PatientServerClient : public QObject {
   ros::Subscriber status_sub_;
 };
 
-}  // namespace vicc_anatomy_viz::rviz_plugins
+}  // namespace vicc_anatomy_viz::rviz_plugin
 
 Q_DECLARE_METATYPE(vicc_anatomy_viz::panel::SelectionRequest)
 Q_DECLARE_METATYPE(vicc_anatomy_viz::panel::ShownStatus)
-Q_DECLARE_METATYPE(vicc_anatomy_viz::rviz_plugins::SelectionResult)
-Q_DECLARE_METATYPE(vicc_anatomy_viz::rviz_plugins::PatientList)
+Q_DECLARE_METATYPE(vicc_anatomy_viz::rviz_plugin::SelectionResult)
+Q_DECLARE_METATYPE(vicc_anatomy_viz::rviz_plugin::PatientList)

@@ -1,0 +1,89 @@
+#pragma once
+// The avatar's OGRE scene (the Visual of the Display/Visual split): the skin and the
+// structures without a finding as context, one object per drawn encoded structure, skin
+// region or proxy; per frame the alternation and the view-dependent transparency.
+//
+// View-dependent transparency (thesis 4.4.2.2, Fig. 4.3), both parts per frame:
+// - per pixel for the skin: an encoded structure's material has a second pass without depth
+//   test, drawn after the skin and the context, blending the structure over whatever hides
+//   it; so the skin is see-through exactly where it covers an encoded structure and opaque
+//   everywhere else;
+// - per object for the inner context: structures whose projected bounding sphere overlaps
+//   an encoded structure's and lie in front of it (avatar_view::findOccluders) are faded.
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#ifndef Q_MOC_RUN
+#include <OGRE/OgreManualObject.h>
+#include <OGRE/OgreSceneManager.h>
+#include <OGRE/OgreSceneNode.h>
+#include <rviz/display_context.h>
+#endif
+
+#include "vicc_anatomy_viz/avatar/avatar_model.hpp"
+#include "vicc_anatomy_viz/avatar_view/alternation.hpp"
+#include "vicc_anatomy_viz/avatar_view/draw_state.hpp"
+#include "vicc_anatomy_viz/avatar_view/occlusion.hpp"
+#include "vicc_anatomy_viz/rviz/avatar_materials.hpp"
+#include "vicc_anatomy_viz/rviz/structure_selection.hpp"
+
+namespace vicc_anatomy_viz::rviz_plugin {
+
+struct VisualOptions {
+  bool transparency = true;        ///< view-dependent transparency
+  float skin_alpha = 1.f;          ///< skin opacity everywhere
+  float see_through_alpha = 0.8f;  ///< opacity of an encoded structure seen through the skin
+  double alternation_period_s = 1.5;
+};
+
+class AvatarVisual {
+ public:
+  using SelectCallback = std::function<void(const std::string&)>;
+
+  AvatarVisual(rviz::DisplayContext* context, Ogre::SceneNode* parent);
+  ~AvatarVisual();
+
+  void setModel(std::shared_ptr<const avatar::AvatarModel> model);
+  void setState(const avatar_view::AvatarDrawState& state, const SelectCallback& on_select);
+  void setOptions(const VisualOptions& options);
+  /// Alternation and occluder fading for the current time and camera.
+  void update(double time_s, const avatar_view::CameraModel& camera);
+
+ private:
+  struct Encoded {
+    Ogre::ManualObject* object = nullptr;
+    std::unique_ptr<StructureSelectionHandler> handler;
+    bool inner = false;  ///< a structure mesh (under the skin), not a skin mark
+    avatar_view::Sphere bounds;
+  };
+  struct Context {
+    Ogre::ManualObject* object = nullptr;
+    avatar_view::Sphere bounds;
+    bool faded = false;
+  };
+
+  Ogre::ManualObject* newObject(unsigned char queue);
+  void destroyObject(Ogre::ManualObject*& object);
+  void clearEncoded();
+  void buildEncoded(const avatar_view::DrawItem& item, const SelectCallback& on_select);
+  void fadeOccluders(const avatar_view::CameraModel& camera);
+
+  rviz::DisplayContext* context_;
+  Ogre::SceneManager* scene_manager_;
+  Ogre::SceneNode* node_;
+  AvatarMaterials materials_;
+  VisualOptions options_;
+  std::shared_ptr<const avatar::AvatarModel> model_;
+  Ogre::ManualObject* skin_ = nullptr;
+  std::vector<Context> context_structures_;  ///< one per model structure (null: no mesh)
+  avatar_view::AvatarDrawState state_;
+  SelectCallback on_select_;
+  std::vector<Encoded> encoded_;
+  std::unique_ptr<avatar_view::AlternationCycle> cycle_;
+  long last_step_ = -1;
+};
+
+}  // namespace vicc_anatomy_viz::rviz_plugin

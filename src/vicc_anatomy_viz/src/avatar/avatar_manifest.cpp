@@ -1,0 +1,123 @@
+#include "vicc_anatomy_viz/avatar/avatar_manifest.hpp"
+
+#include <filesystem>
+
+#include "../core/yaml_reading.hpp"
+#include "vicc_anatomy_viz/errors.hpp"
+
+namespace vicc_anatomy_viz::avatar {
+
+namespace {
+
+using yaml_reading::Cursor;
+
+float number(const Cursor& cursor, const std::string& key, float fallback) {
+  return static_cast<float>(cursor.number(key, fallback));
+}
+
+MeshSource readMeshSource(const Cursor& item, const std::filesystem::path& directory) {
+  item.allowOnly({"file", "mesh", "up_axis", "forward_axis", "unit_in_metres", "translation"});
+  MeshSource source;
+  const std::filesystem::path file = item.string("file");
+  source.path = (file.is_absolute() ? file : directory / file).lexically_normal().string();
+  source.mesh_name = item.string("mesh", "");
+  source.up_axis = item.string("up_axis", source.up_axis);
+  source.forward_axis = item.string("forward_axis", source.forward_axis);
+  source.unit_in_metres = number(item, "unit_in_metres", 1.0f);
+  if (item.has("translation")) {
+    const std::vector<Cursor> values = item.child("translation").items();
+    if (values.size() != 3) item.child("translation").fail("translation needs three numbers");
+    for (int k = 0; k < 3; ++k) source.translation[k] = static_cast<float>(values[k].asDouble());
+  }
+  return source;
+}
+
+GeneratedShape readShape(const Cursor& item) {
+  item.allowOnly({"bone", "from", "to", "azimuth", "depth", "thickness", "width"});
+  GeneratedShape shape;
+  shape.bone = item.string("bone");
+  shape.from = number(item, "from", shape.from);
+  shape.to = number(item, "to", shape.to);
+  shape.azimuth = number(item, "azimuth", shape.azimuth);
+  shape.depth = number(item, "depth", shape.depth);
+  shape.thickness = number(item, "thickness", shape.thickness);
+  shape.width = number(item, "width", shape.width);
+  if (!(shape.to > shape.from)) item.fail("'to' must be greater than 'from'");
+  if (!(shape.depth >= 0 && shape.depth < 1)) item.fail("depth must be in [0, 1)");
+  if (!(shape.thickness > 0 && shape.thickness < 1)) item.fail("thickness must be in (0, 1)");
+  if (!(shape.width > 0)) item.fail("width must be positive");
+  return shape;
+}
+
+ProxyPlacement readProxy(const Cursor& item) {
+  item.allowOnly({"bone", "at", "azimuth", "elevation", "radius"});
+  ProxyPlacement proxy;
+  proxy.bone = item.string("bone");
+  proxy.at = number(item, "at", proxy.at);
+  proxy.azimuth = number(item, "azimuth", proxy.azimuth);
+  proxy.elevation = number(item, "elevation", proxy.elevation);
+  proxy.radius = number(item, "radius", proxy.radius);
+  if (!(proxy.radius > 0)) item.fail("radius must be positive");
+  return proxy;
+}
+
+StructureEntry readStructure(const Cursor& item, const AnatomyCatalog& catalog,
+                             const std::filesystem::path& directory) {
+  item.allowOnly({"id", "sides", "region", "system", "fma_id", "generated", "mesh", "proxy"});
+  StructureEntry entry;
+  entry.where = item.where();
+  entry.id = item.string("id");
+  const Structure* structure = catalog.structure(entry.id);
+  if (!structure) item.fail("unknown structure '" + entry.id + "' (not in the anatomy catalogue)");
+  for (const Cursor& side_item : item.child("sides").items()) {
+    const std::optional<Side> side = sideFromString(side_item.asString());
+    if (!side || !catalog.sideAllowed(*structure, *side)) {
+      side_item.fail("bad side '" + side_item.asString() + "' for " + entry.id);
+    }
+    entry.sides.push_back(*side);
+  }
+  if (entry.sides.empty()) item.fail("sides is empty");
+  entry.region = item.string("region");
+  entry.system = item.string("system");
+  entry.fma_id = structure->fma_id;
+  const std::string manifest_fma = item.string("fma_id", "");
+  if (!manifest_fma.empty() && manifest_fma != structure->fma_id) {
+    item.fail("fma_id '" + manifest_fma + "' differs from the catalogue's '" + structure->fma_id +
+              "' for " + entry.id);
+  }
+  if (item.has("generated") == item.has("mesh") && !item.has("proxy")) {
+    item.fail(entry.id + " needs exactly one of 'generated' and 'mesh', or a proxy alone");
+  }
+  if (item.has("generated") && item.has("mesh"))
+    item.fail(entry.id + " has both generated and mesh");
+  if (item.has("generated")) entry.generated = readShape(item.child("generated"));
+  if (item.has("mesh")) entry.mesh = readMeshSource(item.child("mesh"), directory);
+  if (item.has("proxy")) entry.proxy = readProxy(item.child("proxy"));
+  return entry;
+}
+
+}  // namespace
+
+AvatarManifest loadAvatarManifest(const std::string& path, const AnatomyCatalog& catalog) {
+  const Cursor root = yaml_reading::parseText(yaml_reading::readFile(path), path);
+  root.allowOnly({"skin", "skin_labelling", "structures"});
+  const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+  AvatarManifest manifest;
+  manifest.path = path;
+  manifest.skin = readMeshSource(root.child("skin"), directory);
+  manifest.skin_labelling = root.string("skin_labelling", manifest.skin_labelling);
+  if (manifest.skin_labelling != "dermatomes") {
+    root.child("skin_labelling").fail("skin_labelling must be 'dermatomes'");
+  }
+  for (const Cursor& item : root.sequence("structures")) {
+    manifest.structures.push_back(readStructure(item, catalog, directory));
+    const StructureEntry& added = manifest.structures.back();
+    for (std::size_t i = 0; i + 1 < manifest.structures.size(); ++i) {
+      if (manifest.structures[i].id == added.id)
+        item.fail("structure '" + added.id + "' listed twice");
+    }
+  }
+  return manifest;
+}
+
+}  // namespace vicc_anatomy_viz::avatar

@@ -1,0 +1,151 @@
+#include "vicc_anatomy_viz/rviz/avatar_visual.hpp"
+
+#include "vicc_anatomy_viz/rviz/avatar_meshes.hpp"
+
+namespace vicc_anatomy_viz::rviz_plugin {
+namespace {
+
+/// Skin marks sit this far above the skin (no depth fighting), proxies a little higher.
+constexpr float kRegionLift = 0.0015f;
+constexpr float kProxyLift = 0.003f;
+
+}  // namespace
+
+AvatarVisual::AvatarVisual(rviz::DisplayContext* context, Ogre::SceneNode* parent)
+    : context_(context),
+      scene_manager_(context->getSceneManager()),
+      node_(parent->createChildSceneNode()) {}
+
+AvatarVisual::~AvatarVisual() {
+  clearEncoded();
+  for (Context& structure : context_structures_) destroyObject(structure.object);
+  destroyObject(skin_);
+  scene_manager_->destroySceneNode(node_);
+}
+
+Ogre::ManualObject* AvatarVisual::newObject(unsigned char queue) {
+  Ogre::ManualObject* object = scene_manager_->createManualObject();
+  object->setRenderQueueGroup(queue);
+  node_->attachObject(object);
+  return object;
+}
+
+void AvatarVisual::destroyObject(Ogre::ManualObject*& object) {
+  if (!object) return;
+  node_->detachObject(object);
+  scene_manager_->destroyManualObject(object);
+  object = nullptr;
+}
+
+void AvatarVisual::setModel(std::shared_ptr<const avatar::AvatarModel> model) {
+  clearEncoded();
+  for (Context& structure : context_structures_) destroyObject(structure.object);
+  context_structures_.clear();
+  destroyObject(skin_);
+  model_ = std::move(model);
+  if (!model_) return;
+  skin_ = newObject(kContextQueue);
+  addMeshSection(*skin_, model_->skin, nullptr, materials_.skin(), 0.f, 0.f);
+  for (const avatar::AvatarStructure& structure : model_->structures) {
+    Context entry;
+    if (!structure.mesh.triangles.empty()) {
+      entry.object = newObject(kContextQueue);
+      addMeshSection(*entry.object, structure.mesh, nullptr, materials_.context(), 0.f, 0.f);
+      entry.bounds = avatar_view::boundingSphere(structure.mesh);
+    }
+    context_structures_.push_back(entry);
+  }
+  setState(state_, on_select_);
+}
+
+void AvatarVisual::clearEncoded() {
+  for (Encoded& entry : encoded_) {
+    entry.handler.reset();
+    destroyObject(entry.object);
+  }
+  encoded_.clear();
+  materials_.clearEncoded();
+  for (Context& structure : context_structures_)
+    if (structure.object) structure.object->setVisible(true);
+}
+
+void AvatarVisual::buildEncoded(const avatar_view::DrawItem& item,
+                                const SelectCallback& on_select) {
+  using avatar_view::TargetKind;
+  Encoded entry;
+  entry.inner = item.target == TargetKind::kStructureMesh;
+  const float see_through = entry.inner && options_.transparency ? options_.see_through_alpha : 0.f;
+  const std::string material = materials_.encoded(item.color, item.texture, see_through);
+  const float frequency = item.texture.frequency;
+  entry.object = newObject(entry.inner ? kEncodedQueue : kSkinMarkQueue);
+  const auto index = static_cast<std::size_t>(item.target_index);
+  if (item.target == TargetKind::kSkinRegion) {
+    addMeshSection(*entry.object, model_->skin, &model_->skin_regions[index].triangles, material,
+                   kRegionLift, frequency);
+  } else if (item.target == TargetKind::kProxy) {
+    addProxyDisc(*entry.object, model_->structures[index].proxy, material, kProxyLift, frequency);
+  } else {
+    addMeshSection(*entry.object, model_->structures[index].mesh, nullptr, material, 0.f,
+                   frequency);
+    entry.bounds = avatar_view::boundingSphere(model_->structures[index].mesh);
+    // The encoded object replaces the neutral one of the same structure.
+    if (Ogre::ManualObject* plain = context_structures_[index].object) plain->setVisible(false);
+  }
+  entry.handler = std::make_unique<StructureSelectionHandler>(context_, item.display_name,
+                                                              item.overlay_text, on_select);
+  entry.handler->addTrackedObject(entry.object);
+  encoded_.push_back(std::move(entry));
+}
+
+void AvatarVisual::setState(const avatar_view::AvatarDrawState& state,
+                            const SelectCallback& on_select) {
+  clearEncoded();
+  state_ = state;
+  on_select_ = on_select;
+  cycle_ = std::make_unique<avatar_view::AlternationCycle>(state_, options_.alternation_period_s);
+  last_step_ = -1;
+  if (!model_) return;
+  for (const avatar_view::DrawItem& item : state_.items) buildEncoded(item, on_select);
+}
+
+void AvatarVisual::setOptions(const VisualOptions& options) {
+  const bool rebuild = options.transparency != options_.transparency ||
+                       options.see_through_alpha != options_.see_through_alpha ||
+                       options.alternation_period_s != options_.alternation_period_s;
+  options_ = options;
+  materials_.setSkinAlpha(options_.skin_alpha);
+  if (rebuild) setState(state_, on_select_);
+}
+
+void AvatarVisual::fadeOccluders(const avatar_view::CameraModel& camera) {
+  std::vector<avatar_view::Sphere> targets;
+  for (std::size_t i = 0; i < encoded_.size(); ++i)
+    if (encoded_[i].inner && encoded_[i].object->getVisible())
+      targets.push_back(encoded_[i].bounds);
+  std::vector<avatar_view::Sphere> candidates;
+  for (const Context& structure : context_structures_) candidates.push_back(structure.bounds);
+  std::vector<bool> occludes(candidates.size(), false);
+  if (options_.transparency && !targets.empty())
+    occludes = avatar_view::findOccluders(targets, candidates, camera);
+  for (std::size_t i = 0; i < context_structures_.size(); ++i) {
+    Context& structure = context_structures_[i];
+    if (!structure.object || structure.faded == occludes[i]) continue;
+    structure.faded = occludes[i];
+    structure.object->setMaterialName(
+        0, structure.faded ? materials_.fadedContext() : materials_.context());
+  }
+}
+
+void AvatarVisual::update(double time_s, const avatar_view::CameraModel& camera) {
+  if (cycle_) {
+    const long step = cycle_->step(time_s);
+    if (step != last_step_) {
+      last_step_ = step;
+      for (std::size_t i = 0; i < encoded_.size(); ++i)
+        encoded_[i].object->setVisible(cycle_->shown(i, time_s));
+    }
+  }
+  fadeOccluders(camera);
+}
+
+}  // namespace vicc_anatomy_viz::rviz_plugin
