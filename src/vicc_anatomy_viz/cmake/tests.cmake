@@ -49,5 +49,21 @@ catkin_add_gtest(vicc_anatomy_viz_avatar_view_test
 target_compile_options(vicc_anatomy_viz_avatar_view_test PRIVATE ${VICC_WARNINGS})
 target_link_libraries(vicc_anatomy_viz_avatar_view_test vicc_anatomy_viz_avatar_view gtest_main)
 
+# The AvatarDisplay in the real rviz under Xvfb (xvfb-run is the test's launch-prefix).
+add_rostest_gtest(avatar_display_rostest test/rviz/avatar_display.test
+  test/rviz/AvatarDisplayRostest.cpp)
+target_compile_options(avatar_display_rostest PRIVATE ${VICC_WARNINGS})
+target_compile_definitions(avatar_display_rostest PRIVATE ${VICC_TEST_DEFINITIONS})
+target_link_libraries(avatar_display_rostest vicc_avatar_snapshot_lib ${catkin_LIBRARIES})
+add_dependencies(avatar_display_rostest patient_status_server vicc_anatomy_viz_rviz)
+
+# vicc_avatar_snapshot end to end (starts its own Xvfb and ROS master) and its refusals.
+catkin_add_gtest(vicc_avatar_snapshot_test test/rviz/AvatarSnapshotCliTest.cpp)
+target_compile_options(vicc_avatar_snapshot_test PRIVATE ${VICC_WARNINGS})
+target_compile_definitions(vicc_avatar_snapshot_test PRIVATE ${VICC_TEST_DEFINITIONS}
+  VICC_AVATAR_SNAPSHOT="$<TARGET_FILE:vicc_avatar_snapshot>")
+target_link_libraries(vicc_avatar_snapshot_test vicc_anatomy_viz_core Qt5::Gui gtest_main)
+add_dependencies(vicc_avatar_snapshot_test vicc_avatar_snapshot vicc_anatomy_viz_rviz)
+
 # The patient panel: its logic, avatar.launch, the plugin under Xvfb.
 include(cmake/patient_panel_tests.cmake)

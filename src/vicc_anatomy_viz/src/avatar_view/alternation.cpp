@@ -12,10 +12,14 @@ AlternationCycle::AlternationCycle(const AvatarDrawState& state, double period_s
     group_of_item_.push_back(state.items[i].alternation_group);
     if (state.items[i].alternation_group >= 0) all[state.items[i].alternation_group].push_back(i);
   }
-  // Members keep the status order (the alternation's view order); a group left with one
-  // drawn member (the others hidden or invalid) does not alternate.
-  for (auto& [group, items] : all)
+  // Members in the alternation's view order; a group left with one drawn member (the others
+  // hidden or invalid) does not alternate.
+  for (auto& [group, items] : all) {
+    std::stable_sort(items.begin(), items.end(), [&state](std::size_t a, std::size_t b) {
+      return state.items[a].alternation_rank < state.items[b].alternation_rank;
+    });
     if (items.size() > 1) members_.emplace(group, std::move(items));
+  }
 }
 
 long AlternationCycle::step(double time_s) const {

@@ -122,6 +122,13 @@ std::vector<LegendLine> legendLines(const EncodedStatus& status) {
   return lines;
 }
 
+/// Where entry `index` stands in the alternation's view order; -1 when it is not listed.
+int alternationRank(const Alternation& alternation, std::size_t index) {
+  for (std::size_t rank = 0; rank < alternation.entries.size(); ++rank)
+    if (alternation.entries[rank] == index) return static_cast<int>(rank);
+  return -1;
+}
+
 }  // namespace
 
 bool textureKindFromId(const std::string& id, TextureKind& kind) {
@@ -163,11 +170,15 @@ AvatarDrawState buildDrawState(const EncodedStatus& status, const avatar::Avatar
       continue;
     }
     const int group = entry.alternation_group;
-    if (group >= static_cast<int>(status.alternations.size()) || group < -1) {
+    const int rank = group >= 0 && group < static_cast<int>(status.alternations.size())
+                         ? alternationRank(status.alternations[static_cast<std::size_t>(group)], i)
+                         : -1;
+    if (group != -1 && rank < 0) {
       state.warnings.push_back("alternation group " + std::to_string(group) + " of " +
-                               describe(entry) + " does not exist; drawn without alternation");
+                               describe(entry) + " does not list it; drawn without alternation");
     } else {
       item.alternation_group = group;
+      item.alternation_rank = rank;
     }
     state.items.push_back(std::move(item));
   }

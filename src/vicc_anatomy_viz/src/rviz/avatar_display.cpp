@@ -35,6 +35,13 @@ std::string joinWarnings(const std::vector<std::string>& warnings) {
   return text.str();
 }
 
+/// The legend's label of a category, its id when the legend lacks it.
+std::string categoryLabel(const vicc_msgs::EncodedStatus& status, const std::string& category) {
+  for (const auto& entry : status.legend)
+    if (entry.id == category) return entry.label;
+  return category;
+}
+
 }  // namespace
 
 AvatarDisplay::AvatarDisplay() {
@@ -210,9 +217,9 @@ void AvatarDisplay::updateLegend() {
     for (const auto& alternation : last_msg_->alternations) {
       std::string categories;
       for (const auto& category : alternation.categories)
-        categories += (categories.empty() ? "" : " / ") + category;
-      lines.push_back(
-          {"alternating on " + alternation.display_name + ": " + categories, false, {}, false});
+        categories += (categories.empty() ? "" : " / ") + categoryLabel(*last_msg_, category);
+      lines.push_back({"alternating on " + alternation.display_name + ":", false, {}, false});
+      lines.push_back({"  " + categories, false, {}, false});
     }
   }
   legend_->setLines(lines);

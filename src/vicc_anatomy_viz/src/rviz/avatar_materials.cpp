@@ -6,6 +6,9 @@
 #include <OGRE/OgreTechnique.h>
 #include <OGRE/OgreTextureManager.h>
 
+#include <algorithm>
+#include <utility>
+
 #include "vicc_anatomy_viz/avatar_view/procedural_texture.hpp"
 
 namespace vicc_anatomy_viz::rviz_plugin {
@@ -46,10 +49,14 @@ Ogre::MaterialPtr plainMaterial(const std::string& name, const Ogre::ColourValue
 
 AvatarMaterials::AvatarMaterials() {
   skin_ = uniqueName("skin");
+  skin_see_through_ = uniqueName("skin_see_through");
   context_ = uniqueName("context");
   faded_context_ = uniqueName("faded_context");
   skin_material_ = plainMaterial(skin_, Ogre::ColourValue(0.86f, 0.86f, 0.84f, 1.f));
-  fixed_ = {skin_material_, plainMaterial(context_, Ogre::ColourValue(0.74f, 0.72f, 0.70f, 1.f)),
+  skin_see_through_material_ =
+      plainMaterial(skin_see_through_, Ogre::ColourValue(0.86f, 0.86f, 0.84f, 0.2f));
+  fixed_ = {skin_material_, skin_see_through_material_,
+            plainMaterial(context_, Ogre::ColourValue(0.74f, 0.72f, 0.70f, 1.f)),
             plainMaterial(faded_context_, Ogre::ColourValue(0.74f, 0.72f, 0.70f, 0.25f))};
 }
 
@@ -64,15 +71,19 @@ std::string AvatarMaterials::uniqueName(const std::string& stem) {
   return "vicc_avatar/" + stem + "/" + std::to_string(counter_++);
 }
 
-void AvatarMaterials::setSkinAlpha(float alpha) {
-  Ogre::Pass& pass = *skin_material_->getTechnique(0)->getPass(0);
-  Ogre::ColourValue colour = pass.getDiffuse();
-  colour.a = alpha;
-  pass.setDiffuse(colour);
-  setBlend(pass, alpha);
-  // A see-through skin still hides what lies behind it from the depth test: encoded
-  // structures behind it are drawn by their see-through pass, context ones show through.
-  pass.setDepthWriteEnabled(true);
+void AvatarMaterials::setSkinAlpha(float skin_alpha, float see_through_alpha) {
+  const std::pair<Ogre::MaterialPtr, float> skins[] = {
+      {skin_material_, skin_alpha},
+      {skin_see_through_material_, std::min(skin_alpha, 1.f - see_through_alpha)}};
+  for (const auto& [material, alpha] : skins) {
+    Ogre::Pass& pass = *material->getTechnique(0)->getPass(0);
+    Ogre::ColourValue colour = pass.getDiffuse();
+    colour.a = alpha;
+    pass.setDiffuse(colour);
+    setBlend(pass, alpha);
+    // A see-through skin still hides what lies behind it from later (skin mark) passes.
+    pass.setDepthWriteEnabled(true);
+  }
 }
 
 Ogre::TexturePtr AvatarMaterials::texture(const avatar_view::TextureState& state) {
@@ -86,25 +97,13 @@ Ogre::TexturePtr AvatarMaterials::texture(const avatar_view::TextureState& state
   return texture;
 }
 
-std::string AvatarMaterials::encoded(const Rgba& color, const avatar_view::TextureState& state,
-                                     float see_through_alpha) {
+std::string AvatarMaterials::encoded(const Rgba& color, const avatar_view::TextureState& state) {
   const std::string name = uniqueName("encoded");
   Ogre::MaterialPtr material =
       plainMaterial(name, Ogre::ColourValue(color.r, color.g, color.b, color.a));
   Ogre::Pass& pass = *material->getTechnique(0)->getPass(0);
-  Ogre::TexturePtr pattern;
-  if (state.kind != avatar_view::TextureKind::kNone) {
-    pattern = texture(state);
-    pass.createTextureUnitState()->setTexture(pattern);
-  }
-  if (see_through_alpha > 0.f) {
-    Ogre::Pass& through = *material->getTechnique(0)->createPass();
-    setLitColour(through, Ogre::ColourValue(color.r, color.g, color.b, see_through_alpha));
-    through.setSceneBlending(Ogre::SBT_TRANSPARENT_ALPHA);
-    through.setDepthCheckEnabled(false);
-    through.setDepthWriteEnabled(false);
-    if (pattern) through.createTextureUnitState()->setTexture(pattern);
-  }
+  if (state.kind != avatar_view::TextureKind::kNone)
+    pass.createTextureUnitState()->setTexture(texture(state));
   material->load();
   encoded_.push_back(material);
   return name;

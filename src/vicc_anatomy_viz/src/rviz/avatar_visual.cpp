@@ -14,12 +14,16 @@ constexpr float kProxyLift = 0.003f;
 AvatarVisual::AvatarVisual(rviz::DisplayContext* context, Ogre::SceneNode* parent)
     : context_(context),
       scene_manager_(context->getSceneManager()),
-      node_(parent->createChildSceneNode()) {}
+      node_(parent->createChildSceneNode()) {
+  scene_manager_->addRenderQueueListener(&stencil_);
+}
 
 AvatarVisual::~AvatarVisual() {
   clearEncoded();
   for (Context& structure : context_structures_) destroyObject(structure.object);
   destroyObject(skin_);
+  destroyObject(skin_see_through_);
+  scene_manager_->removeRenderQueueListener(&stencil_);
   scene_manager_->destroySceneNode(node_);
 }
 
@@ -42,10 +46,13 @@ void AvatarVisual::setModel(std::shared_ptr<const avatar::AvatarModel> model) {
   for (Context& structure : context_structures_) destroyObject(structure.object);
   context_structures_.clear();
   destroyObject(skin_);
+  destroyObject(skin_see_through_);
   model_ = std::move(model);
   if (!model_) return;
-  skin_ = newObject(kContextQueue);
+  skin_ = newObject(kSkinQueue);
   addMeshSection(*skin_, model_->skin, nullptr, materials_.skin(), 0.f, 0.f);
+  skin_see_through_ = newObject(kSkinSeeThroughQueue);
+  addMeshSection(*skin_see_through_, model_->skin, nullptr, materials_.skinSeeThrough(), 0.f, 0.f);
   for (const avatar::AvatarStructure& structure : model_->structures) {
     Context entry;
     if (!structure.mesh.triangles.empty()) {
@@ -74,8 +81,7 @@ void AvatarVisual::buildEncoded(const avatar_view::DrawItem& item,
   using avatar_view::TargetKind;
   Encoded entry;
   entry.inner = item.target == TargetKind::kStructureMesh;
-  const float see_through = entry.inner && options_.transparency ? options_.see_through_alpha : 0.f;
-  const std::string material = materials_.encoded(item.color, item.texture, see_through);
+  const std::string material = materials_.encoded(item.color, item.texture);
   const float frequency = item.texture.frequency;
   entry.object = newObject(entry.inner ? kEncodedQueue : kSkinMarkQueue);
   const auto index = static_cast<std::size_t>(item.target_index);
@@ -109,11 +115,10 @@ void AvatarVisual::setState(const avatar_view::AvatarDrawState& state,
 }
 
 void AvatarVisual::setOptions(const VisualOptions& options) {
-  const bool rebuild = options.transparency != options_.transparency ||
-                       options.see_through_alpha != options_.see_through_alpha ||
-                       options.alternation_period_s != options_.alternation_period_s;
+  const bool rebuild = options.alternation_period_s != options_.alternation_period_s;
   options_ = options;
-  materials_.setSkinAlpha(options_.skin_alpha);
+  materials_.setSkinAlpha(options_.skin_alpha, options_.see_through_alpha);
+  stencil_.setEnabled(options_.transparency);
   if (rebuild) setState(state_, on_select_);
 }
 

@@ -23,7 +23,7 @@ constexpr int kPadding = 8;
 constexpr int kSwatch = 14;
 
 QImage paint(const std::vector<OverlayLine>& lines) {
-  QFont font("DejaVu Sans", 10);
+  QFont font("DejaVu Sans", 9);
   QFont bold = font;
   bold.setBold(true);
   const QFontMetrics metrics(bold);

@@ -2,10 +2,10 @@
 // into a PNG (see vicc_avatar_snapshot_options.hpp for the command line). Exit codes: 0 PNG
 // written, 2 bad command line, 3 patient/date/database problem, 4 no display server,
 // 5 rendering failed.
-#include <QApplication>
 #include <ros/ros.h>
-#include <vicc_msgs/EncodedStatus.h>
 #include <unistd.h>
+#include <vicc_msgs/EncodedStatus.h>
+#include <QApplication>
 
 #include <cstdlib>
 #include <iostream>
@@ -41,7 +41,8 @@ vicc_msgs::EncodedStatus loadStatus(const snapshot::SnapshotOptions& options) {
   try {
     PatientStatusService service(config);
     const std::vector<TimestampUs> dates = service.examinationDates(options.patient);
-    if (dates.empty()) throw Failure(3, "unknown patient '" + options.patient + "' in " + options.db);
+    if (dates.empty())
+      throw Failure(3, "unknown patient '" + options.patient + "' in " + options.db);
     if (!service.examinationAt(options.patient, options.date))
       throw Failure(3, "no examination of " + options.patient + " at or before " + options.date +
                            " (first examination: " + formatTimestamp(dates.front()) + ")");

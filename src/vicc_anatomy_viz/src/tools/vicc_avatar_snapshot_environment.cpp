@@ -41,7 +41,8 @@ bool portAnswers(int port) {
   address.sin_family = AF_INET;
   address.sin_port = htons(static_cast<uint16_t>(port));
   address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  const bool answers = fd >= 0 && connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)) == 0;
+  const bool answers =
+      fd >= 0 && connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)) == 0;
   if (fd >= 0) close(fd);
   return answers;
 }
@@ -61,7 +62,8 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, int keep_fd) {
     setpgid(0, 0);
     for (int fd = 3; fd < 1024; ++fd)
       if (fd != keep_fd) close(fd);
-    if (freopen("/dev/null", "w", stdout) == nullptr || freopen("/dev/null", "w", stderr) == nullptr)
+    if (freopen("/dev/null", "w", stdout) == nullptr ||
+        freopen("/dev/null", "w", stderr) == nullptr)
       _exit(126);
     execv(path.c_str(), args.data());
     _exit(127);
@@ -128,8 +130,9 @@ bool displayAnswers(const std::string& display) {
 
 std::string startXvfb(int width, int height, ChildProcess& process) {
   if (findOnPath("Xvfb").empty())
-    throw std::runtime_error("no display server: DISPLAY is not set and Xvfb is not installed "
-                             "(apt-get install xvfb), or set DISPLAY");
+    throw std::runtime_error(
+        "no display server: DISPLAY is not set and Xvfb is not installed "
+        "(apt-get install xvfb), or set DISPLAY");
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error("cannot create a pipe for Xvfb");
   const std::string screen = std::to_string(width + 64) + "x" + std::to_string(height + 64) + "x24";

@@ -44,22 +44,30 @@ SnapshotOptions parseSnapshotOptions(const std::vector<std::string>& args) {
     const std::string& option = args[i];
     if (i + 1 >= args.size()) throw std::invalid_argument(option + ": missing value");
     const std::string& value = args[++i];
-    if (option == "--db") options.db = value, has_db = true;
-    else if (option == "--patient") options.patient = value, has_patient = true;
-    else if (option == "--date") options.date = value;
-    else if (option == "--out") options.out = value, has_out = true;
-    else if (option == "--hide") options.hidden_categories = splitCategories(value);
-    else if (option == "--size") readSize(value, options);
+    if (option == "--db")
+      options.db = value, has_db = true;
+    else if (option == "--patient")
+      options.patient = value, has_patient = true;
+    else if (option == "--date")
+      options.date = value;
+    else if (option == "--out")
+      options.out = value, has_out = true;
+    else if (option == "--hide")
+      options.hidden_categories = splitCategories(value);
+    else if (option == "--size")
+      readSize(value, options);
     else if (option == "--view") {
       const auto view = avatar_view::bodyViewFromString(value);
-      if (!view) throw std::invalid_argument("--view: front, back, left or right, got '" + value + "'");
+      if (!view)
+        throw std::invalid_argument("--view: front, back, left or right, got '" + value + "'");
       options.view = *view;
     } else {
       throw std::invalid_argument("unknown option '" + option + "'");
     }
   }
   if (!has_db || options.db.empty()) throw std::invalid_argument("--db FILE is required");
-  if (!has_patient || options.patient.empty()) throw std::invalid_argument("--patient ID is required");
+  if (!has_patient || options.patient.empty())
+    throw std::invalid_argument("--patient ID is required");
   if (!has_out || options.out.empty()) throw std::invalid_argument("--out FILE.png is required");
   return options;
 }

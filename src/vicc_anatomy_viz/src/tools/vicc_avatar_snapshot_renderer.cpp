@@ -3,9 +3,6 @@
 #include <OGRE/OgreCamera.h>
 #include <OGRE/OgreRenderWindow.h>
 #include <OGRE/OgreRoot.h>
-#include <QApplication>
-#include <QColor>
-#include <QElapsedTimer>
 #include <ros/ros.h>
 #include <rviz/display_group.h>
 #include <rviz/properties/property.h>
@@ -14,6 +11,9 @@
 #include <rviz/view_controller.h>
 #include <rviz/view_manager.h>
 #include <rviz/visualization_manager.h>
+#include <QApplication>
+#include <QColor>
+#include <QElapsedTimer>
 
 #include <algorithm>
 #include <stdexcept>
@@ -48,9 +48,12 @@ AvatarRenderer::AvatarRenderer(int width, int height, const std::string& status_
   rviz::Display* display = manager_->createDisplay("vicc_anatomy_viz/Avatar", "Avatar", true);
   display_ = dynamic_cast<rviz_plugin::AvatarDisplay*>(display);
   if (!display_)
-    throw std::runtime_error("rviz could not load the display plugin vicc_anatomy_viz/Avatar "
-                             "(is the workspace's devel/setup.bash sourced?)");
+    throw std::runtime_error(
+        "rviz could not load the display plugin vicc_anatomy_viz/Avatar "
+        "(is the workspace's devel/setup.bash sourced?)");
   child(display_, "Topic").setValue(QString::fromStdString(status_topic));
+  // A still shows the first category of every alternation; the legend names the alternation.
+  child(display_, "Alternation period").setValue(0.0);
   manager_->startUpdate();
 }
 

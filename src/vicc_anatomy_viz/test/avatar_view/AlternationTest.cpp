@@ -14,6 +14,7 @@ AvatarDrawState alternatingPainAndHypoesthesia() {
   status.structures[0].alternation_group = 0;
   status.structures[1].alternation_group = 0;
   status.alternations.resize(1);
+  status.alternations[0].entries = {0, 1};
   return buildDrawState(status, testing::syntheticAvatar());
 }
 
@@ -32,6 +33,19 @@ TEST(AlternationTest, MembersTakeTurnsEachPeriod) {
   EXPECT_FALSE(cycle.shown(7, 0.0));
 }
 
+TEST(AlternationTest, TheAlternationsViewOrderDecidesWhoIsShownFirst) {
+  EncodedStatus status = testing::statusWith({testing::entry("dermatome_L5", Side::kLeft, "hypo"),
+                                              testing::entry("dermatome_L5", Side::kLeft, "pain")});
+  status.structures[0].alternation_group = 0;
+  status.structures[1].alternation_group = 0;
+  status.alternations.resize(1);
+  status.alternations[0].entries = {1, 0};  // pain first, although listed second
+  const AlternationCycle cycle(buildDrawState(status, testing::syntheticAvatar()), 1.0);
+  EXPECT_TRUE(cycle.shown(1, 0.5));
+  EXPECT_FALSE(cycle.shown(0, 0.5));
+  EXPECT_TRUE(cycle.shown(0, 1.5));
+}
+
 TEST(AlternationTest, NoPeriodShowsTheFirstMember) {
   for (double period : {0.0, -1.0, std::numeric_limits<double>::infinity()}) {
     const AlternationCycle cycle(alternatingPainAndHypoesthesia(), period);
@@ -47,6 +61,7 @@ TEST(AlternationTest, AGroupLeftWithOneDrawnMemberDoesNotAlternate) {
   status.structures[0].alternation_group = 0;
   status.structures[1].alternation_group = 0;
   status.alternations.resize(1);
+  status.alternations[0].entries = {0, 1};
   const AlternationCycle cycle(buildDrawState(status, testing::syntheticAvatar()), 1.0);
   EXPECT_TRUE(cycle.groups().empty());
   EXPECT_TRUE(cycle.shown(0, 1.5));

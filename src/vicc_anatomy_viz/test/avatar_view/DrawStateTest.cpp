@@ -119,6 +119,10 @@ TEST(DrawStateTest, AlternationGroupOutOfRangeIsWarnedAndDrawnAlone) {
   ASSERT_EQ(state.items.size(), 1u);
   EXPECT_EQ(state.items[0].alternation_group, -1);
   EXPECT_TRUE(mentions(state.warnings, "alternation group 3"));
+  // A group that exists but does not list the entry is not trusted either.
+  status.alternations.resize(1);
+  status.structures[0].alternation_group = 0;
+  EXPECT_EQ(buildDrawState(status, syntheticAvatar()).items[0].alternation_group, -1);
 }
 
 TEST(DrawStateTest, HeadlineNamesPreliminaryAndPartialExaminations) {

@@ -38,6 +38,7 @@ struct DrawItem {
   Rgba color;
   TextureState texture;
   int alternation_group = -1;  ///< -1: alone on its structure
+  int alternation_rank = 0;    ///< position in the group's view order (the first is shown first)
   std::string overlay_text;    ///< name + raw values, shown when the structure is clicked
 };
 

@@ -47,6 +47,10 @@ class AvatarDisplay : public rviz::Display {
   const std::string& modelError() const { return model_error_; }
   unsigned drawnStatusCount() const { return drawn_status_count_; }
   const avatar_view::AvatarDrawState& drawState() const { return draw_state_; }
+  /// The last status received (empty before the first).
+  vicc_msgs::EncodedStatus lastStatus() const {
+    return last_msg_ ? *last_msg_ : vicc_msgs::EncodedStatus();
+  }
   /// Draws `msg` as if it had arrived on the topic.
   void showStatus(const vicc_msgs::EncodedStatus& msg);
 

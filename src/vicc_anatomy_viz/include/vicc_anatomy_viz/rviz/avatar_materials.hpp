@@ -1,8 +1,8 @@
 #pragma once
-// The avatar's OGRE materials: the skin and the structures without a finding (neutral, no hue
-// that could be read as a category), and one material per encoded structure: its colour,
-// lit, times its procedural texture, with an optional see-through pass that draws it over
-// whatever hides it (view-dependent transparency, see AvatarVisual).
+// The avatar's OGRE materials: the skin (opaque, and see-through for the pixels where it hides
+// an encoded structure) and the structures without a finding (neutral, no hue that could be
+// read as a category), and one material per encoded structure: its colour, lit, times its
+// procedural texture.
 
 #include <string>
 #include <vector>
@@ -14,11 +14,13 @@
 
 namespace vicc_anatomy_viz::rviz_plugin {
 
-/// Render queue groups: skin and context first, so their depth is known when the encoded
-/// structures' see-through pass runs; skin regions and proxies on top of the skin.
-constexpr unsigned char kContextQueue = 50;  // Ogre::RENDER_QUEUE_MAIN
-constexpr unsigned char kEncodedQueue = 51;
-constexpr unsigned char kSkinMarkQueue = 52;
+/// Render queue groups, in drawing order (see SeeThroughStencil): encoded inner structures,
+/// context structures, the skin (opaque, then see-through), skin marks (regions, proxies).
+constexpr unsigned char kEncodedQueue = 60;
+constexpr unsigned char kContextQueue = 61;
+constexpr unsigned char kSkinQueue = 62;
+constexpr unsigned char kSkinSeeThroughQueue = 63;
+constexpr unsigned char kSkinMarkQueue = 64;
 
 class AvatarMaterials {
  public:
@@ -28,15 +30,14 @@ class AvatarMaterials {
   AvatarMaterials& operator=(const AvatarMaterials&) = delete;
 
   const std::string& skin() const { return skin_; }
+  const std::string& skinSeeThrough() const { return skin_see_through_; }
   const std::string& context() const { return context_; }
   const std::string& fadedContext() const { return faded_context_; }
   /// Skin opacity (1: opaque) and the opacity of an encoded structure seen through it.
-  void setSkinAlpha(float alpha);
+  void setSkinAlpha(float skin_alpha, float see_through_alpha);
 
-  /// A new material for an encoded structure. `see_through_alpha` > 0 adds the pass drawn
-  /// without depth test at that opacity.
-  std::string encoded(const Rgba& color, const avatar_view::TextureState& texture,
-                      float see_through_alpha);
+  /// A new material for an encoded structure.
+  std::string encoded(const Rgba& color, const avatar_view::TextureState& texture);
   /// Drops the materials and textures encoded() made (a new status arrived).
   void clearEncoded();
 
@@ -44,10 +45,10 @@ class AvatarMaterials {
   std::string uniqueName(const std::string& stem);
   Ogre::TexturePtr texture(const avatar_view::TextureState& texture);
 
-  std::string skin_, context_, faded_context_;
+  std::string skin_, skin_see_through_, context_, faded_context_;
   std::vector<Ogre::MaterialPtr> encoded_;
   std::vector<Ogre::TexturePtr> textures_;
-  Ogre::MaterialPtr skin_material_;
+  Ogre::MaterialPtr skin_material_, skin_see_through_material_;
   std::vector<Ogre::MaterialPtr> fixed_;
   unsigned counter_ = 0;
 };

@@ -4,10 +4,8 @@
 // region or proxy; per frame the alternation and the view-dependent transparency.
 //
 // View-dependent transparency (thesis 4.4.2.2, Fig. 4.3), both parts per frame:
-// - per pixel for the skin: an encoded structure's material has a second pass without depth
-//   test, drawn after the skin and the context, blending the structure over whatever hides
-//   it; so the skin is see-through exactly where it covers an encoded structure and opaque
-//   everywhere else;
+// - per pixel for the skin: SeeThroughStencil (the skin is drawn twice, opaque outside and
+//   see-through inside the pixels the encoded inner structures cover);
 // - per object for the inner context: structures whose projected bounding sphere overlaps
 //   an encoded structure's and lie in front of it (avatar_view::findOccluders) are faded.
 
@@ -28,6 +26,7 @@
 #include "vicc_anatomy_viz/avatar_view/draw_state.hpp"
 #include "vicc_anatomy_viz/avatar_view/occlusion.hpp"
 #include "vicc_anatomy_viz/rviz/avatar_materials.hpp"
+#include "vicc_anatomy_viz/rviz/see_through_stencil.hpp"
 #include "vicc_anatomy_viz/rviz/structure_selection.hpp"
 
 namespace vicc_anatomy_viz::rviz_plugin {
@@ -78,6 +77,8 @@ class AvatarVisual {
   VisualOptions options_;
   std::shared_ptr<const avatar::AvatarModel> model_;
   Ogre::ManualObject* skin_ = nullptr;
+  Ogre::ManualObject* skin_see_through_ = nullptr;
+  SeeThroughStencil stencil_;
   std::vector<Context> context_structures_;  ///< one per model structure (null: no mesh)
   avatar_view::AvatarDrawState state_;
   SelectCallback on_select_;

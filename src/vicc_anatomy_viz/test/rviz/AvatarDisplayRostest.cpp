@@ -1,0 +1,291 @@
+// rostest: SDH-046 (thesis Fig. 4.6) recorded into the server's database, selected through the
+// server's service, drawn by the AvatarDisplay in rviz; the rendered colours at the projected
+// positions of known structures are the encoded ones (hue within tolerance), a later date and
+// a hidden category change them, and switching the view-dependent transparency off hides the
+// paresis under the skin.
+#include <gtest/gtest.h>
+
+#include <ros/ros.h>
+#include <rviz/properties/property.h>
+#include <vicc_msgs/SelectPatient.h>
+#include <QApplication>
+#include <QColor>
+#include <QImage>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "vicc_anatomy_viz/patient_status_service.hpp"
+#include "vicc_anatomy_viz/record_json.hpp"
+#include "vicc_anatomy_viz/rviz/avatar_display.hpp"
+#include "vicc_avatar_snapshot_renderer.hpp"
+
+namespace {
+
+using namespace vicc_anatomy_viz;
+using avatar_view::BodyView;
+
+constexpr int kWidth = 500, kHeight = 800;
+constexpr float kHueToleranceDeg = 15.f;
+constexpr double kWaitS = 30.0;
+/// The skin and context are neutral grey (saturation < 0.03); the palest encoded colour seen
+/// through the skin keeps about 0.25.
+constexpr double kMinSaturation = 0.12;
+
+std::string databasePath() {
+  std::string db;
+  ros::param::get("~db", db);
+  return db;
+}
+
+/// The sample patient written straight into the server's database file (the server opens
+/// it on first use).
+void recordFigurePatient() {
+  const std::string path = std::string(VICC_TEST_PACKAGE_DIR) + "/data/samples/fig4_6_patient.json";
+  PatientStatusConfig config;
+  config.encoding_config = defaultEncodingConfigPath();
+  config.anatomy_config = defaultAnatomyConfigPath();
+  config.store.path = databasePath();
+  PatientStatusService service(config);
+  service.record(examinationsFromJson(parseJsonText(readTextFile(path), path)),
+                 WriteMode::kRejectExisting);
+}
+
+/// What a window of pixels around a point shows: the circular mean hue of its saturated
+/// pixels and how many there are.
+struct PixelSample {
+  int saturated = 0;
+  float hue_deg = 0.f;
+};
+
+PixelSample sample(const QImage& image, const Eigen::Vector2f& pixel) {
+  constexpr int kRadius = 2;
+  PixelSample result;
+  Eigen::Vector2f direction = Eigen::Vector2f::Zero();
+  for (int dy = -kRadius; dy <= kRadius; ++dy) {
+    for (int dx = -kRadius; dx <= kRadius; ++dx) {
+      const QPoint point(static_cast<int>(pixel.x()) + dx, static_cast<int>(pixel.y()) + dy);
+      if (!image.rect().contains(point)) continue;
+      const QColor colour = image.pixelColor(point);
+      if (colour.hsvSaturationF() < kMinSaturation || colour.hsvHue() < 0) continue;
+      ++result.saturated;
+      const float angle = static_cast<float>(colour.hsvHue()) * static_cast<float>(M_PI) / 180.f;
+      direction += Eigen::Vector2f(std::cos(angle), std::sin(angle));
+    }
+  }
+  result.hue_deg = std::atan2(direction.y(), direction.x()) * 180.f / static_cast<float>(M_PI);
+  if (result.hue_deg < 0.f) result.hue_deg += 360.f;
+  return result;
+}
+
+float hueDistance(float a, float b) {
+  const float d = std::fabs(a - b);
+  return std::min(d, 360.f - d);
+}
+
+float hueOf(const Rgba& colour) {
+  return static_cast<float>(QColor::fromRgbF(colour.r, colour.g, colour.b).hsvHueF() * 360.0);
+}
+
+class AvatarDisplayRostest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    recordFigurePatient();
+    renderer_ = std::make_unique<snapshot::AvatarRenderer>(kWidth, kHeight,
+                                                           "/patient_status_server/status");
+  }
+  static void TearDownTestSuite() {
+    renderer_.reset();
+    for (const char* suffix : {"", "-wal", "-shm"}) std::remove((databasePath() + suffix).c_str());
+  }
+
+  /// Selects (patient, date, filter) at the server and renders the status it publishes.
+  QImage show(const std::string& date, const std::vector<std::string>& hidden, BodyView view) {
+    const unsigned drawn = renderer_->display().drawnStatusCount();
+    vicc_msgs::SelectPatient select;
+    select.request.patient_id = "SDH-046";
+    select.request.date = date;
+    select.request.hidden_categories = hidden;
+    EXPECT_TRUE(ros::service::waitForService("/patient_status_server/select_patient", 20000));
+    EXPECT_TRUE(ros::service::call("/patient_status_server/select_patient", select));
+    EXPECT_TRUE(renderer_->waitForStatus(drawn, kWaitS)) << "no status drawn for " << date;
+    EXPECT_TRUE(renderer_->setView(view));
+    return renderer_->grab();
+  }
+
+  const avatar::AvatarModel& model() { return *renderer_->display().model(); }
+
+  /// The encoded colour the display drew for (category, structure, side); nullptr if none.
+  const avatar_view::DrawItem* drawn(const std::string& category, const std::string& id,
+                                     Side side) {
+    for (const auto& item : renderer_->display().drawState().items)
+      if (item.category == category && item.structure_id == id && item.side == side) return &item;
+    return nullptr;
+  }
+
+  Eigen::Vector2f project(const Eigen::Vector3f& point) {
+    Eigen::Vector2f pixel(-1.f, -1.f);
+    EXPECT_TRUE(avatar_view::projectToPixel(point, renderer_->camera(), kWidth, kHeight, pixel));
+    return pixel;
+  }
+
+  /// A point of a skin region facing the camera: the facing triangle nearest to the centroid
+  /// of the region's facing triangles.
+  Eigen::Vector3f facingPoint(const std::string& region_id, Side side) {
+    const avatar::SkinRegion* region = model().skinRegion(region_id, side);
+    EXPECT_NE(region, nullptr) << region_id;
+    const Eigen::Vector3f eye = renderer_->orbit().eye();
+    std::vector<Eigen::Vector3f> centres;
+    for (int t : region ? region->triangles : std::vector<int>{}) {
+      const Eigen::Vector3i& tri = model().skin.triangles[static_cast<std::size_t>(t)];
+      const Eigen::Vector3f a = model().skin.vertices[tri[0]], b = model().skin.vertices[tri[1]],
+                            c = model().skin.vertices[tri[2]];
+      const Eigen::Vector3f centre = (a + b + c) / 3.f;
+      if ((b - a).cross(c - a).normalized().dot((eye - centre).normalized()) > 0.7f)
+        centres.push_back(centre);
+    }
+    EXPECT_FALSE(centres.empty()) << region_id << " faces away from the camera";
+    Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+    for (const auto& centre : centres) mean += centre / static_cast<float>(centres.size());
+    Eigen::Vector3f best = mean;
+    for (const auto& centre : centres)
+      if ((centre - mean).norm() < (best - mean).norm() || best == mean) best = centre;
+    return best;
+  }
+
+  Eigen::Vector3f structureCentre(const std::string& id, Side side) {
+    const avatar::AvatarStructure* structure = model().structure(id, side);
+    EXPECT_NE(structure, nullptr) << id;
+    if (!structure) return Eigen::Vector3f::Zero();
+    if (structure->mesh.vertices.empty()) return structure->proxy.centre;
+    return avatar_view::boundingSphere(structure->mesh).centre;
+  }
+
+  void expectHue(const QImage& image, const Eigen::Vector3f& point, const Rgba& expected,
+                 const std::string& what) {
+    const PixelSample found = sample(image, project(point));
+    EXPECT_GE(found.saturated, 5) << what << ": not coloured at its projected position";
+    EXPECT_LT(hueDistance(found.hue_deg, hueOf(expected)), kHueToleranceDeg)
+        << what << ": hue " << found.hue_deg << " expected " << hueOf(expected);
+  }
+
+  void expectUncoloured(const QImage& image, const Eigen::Vector3f& point,
+                        const std::string& what) {
+    EXPECT_LE(sample(image, project(point)).saturated, 2) << what << " is coloured";
+  }
+
+  static std::unique_ptr<snapshot::AvatarRenderer> renderer_;
+};
+
+std::unique_ptr<snapshot::AvatarRenderer> AvatarDisplayRostest::renderer_;
+
+TEST_F(AvatarDisplayRostest, PreOperativeFindingsAreDrawnInTheirColoursOnTheirSide) {
+  const QImage image = show("2023-03-06", {}, BodyView::kFront);
+  ASSERT_NE(renderer_->display().model(), nullptr) << renderer_->display().modelError();
+  const auto* pain = drawn("radicular_pain", "dermatome_L5", Side::kLeft);
+  const auto* paresis = drawn("paresis", "tibialis_anterior", Side::kRight);
+  const auto* reflex = drawn("t_reflex", "patellar_ligament", Side::kRight);
+  ASSERT_TRUE(pain && paresis && reflex);
+  EXPECT_TRUE(renderer_->display().drawState().warnings.empty());
+  // Alternation off in stills: the first category of the L5 alternation (pain) is shown.
+  expectHue(image, facingPoint("dermatome_L5", Side::kLeft), pain->color, "left L5 pain");
+  expectHue(image, structureCentre("tibialis_anterior", Side::kRight), paresis->color,
+            "right tibialis anterior paresis (through the skin)");
+  expectHue(image, structureCentre("patellar_ligament", Side::kRight), reflex->color,
+            "right patellar reflex proxy");
+  // Nothing on the other side.
+  expectUncoloured(image, facingPoint("dermatome_L5", Side::kRight), "right L5");
+  expectUncoloured(image, structureCentre("tibialis_anterior", Side::kLeft), "left tibialis");
+  // From the front the patient's right is on the image's left.
+  EXPECT_LT(project(structureCentre("tibialis_anterior", Side::kRight)).x(), kWidth / 2.f);
+}
+
+TEST_F(AvatarDisplayRostest, TheLaterDateShowsThePostOperativeStatus) {
+  const QImage image = show("2023-03-10", {}, BodyView::kFront);
+  const auto* sensory = drawn("sensory_disorder", "dermatome_L5", Side::kLeft);
+  ASSERT_NE(sensory, nullptr);
+  EXPECT_EQ(drawn("radicular_pain", "dermatome_L5", Side::kLeft), nullptr);
+  expectHue(image, facingPoint("dermatome_L5", Side::kLeft), sensory->color,
+            "left L5 sensory disorder");
+  // Symmetric reflexes post-op: no proxy any more.
+  expectUncoloured(image, structureCentre("patellar_ligament", Side::kRight),
+                   "right patellar proxy");
+}
+
+TEST_F(AvatarDisplayRostest, AHiddenCategoryIsNotDrawn) {
+  const QImage image = show("2023-03-06", {"paresis"}, BodyView::kFront);
+  EXPECT_EQ(drawn("paresis", "tibialis_anterior", Side::kRight), nullptr);
+  expectUncoloured(image, structureCentre("tibialis_anterior", Side::kRight), "hidden paresis");
+  const auto* reflex = drawn("t_reflex", "patellar_ligament", Side::kRight);
+  ASSERT_NE(reflex, nullptr);
+  expectHue(image, structureCentre("patellar_ligament", Side::kRight), reflex->color,
+            "right patellar reflex proxy");
+}
+
+TEST_F(AvatarDisplayRostest, WithoutTransparencyTheSkinHidesTheParesis) {
+  renderer_->setTransparency(false);
+  const QImage opaque = show("2023-03-06", {}, BodyView::kFront);
+  renderer_->setTransparency(true);
+  expectUncoloured(opaque, structureCentre("tibialis_anterior", Side::kRight),
+                   "tibialis anterior under an opaque skin");
+  const auto* pain = drawn("radicular_pain", "dermatome_L5", Side::kLeft);
+  ASSERT_NE(pain, nullptr);
+  expectHue(opaque, facingPoint("dermatome_L5", Side::kLeft), pain->color, "left L5 pain");
+}
+
+TEST_F(AvatarDisplayRostest, BadStatusEntriesAreWarnedAndTheRestIsDrawn) {
+  show("2023-03-06", {}, BodyView::kFront);
+  vicc_msgs::EncodedStatus status = renderer_->display().lastStatus();
+  ASSERT_FALSE(status.structures.empty());
+  vicc_msgs::EncodedStructure unknown = status.structures.front();
+  unknown.structure_id = "spleen";
+  unknown.alternation_group = -1;
+  vicc_msgs::EncodedStructure nan_colour = unknown;
+  nan_colour.structure_id = "tibialis_anterior";
+  nan_colour.side = "left";
+  nan_colour.color.r = std::nanf("");
+  status.structures.push_back(unknown);
+  status.structures.push_back(nan_colour);
+  renderer_->display().showStatus(status);
+  const QImage image = renderer_->grab();
+  const auto& warnings = renderer_->display().drawState().warnings;
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[0].find("spleen"), std::string::npos);
+  EXPECT_NE(warnings[1].find("colour"), std::string::npos);
+  expectUncoloured(image, structureCentre("tibialis_anterior", Side::kLeft),
+                   "NaN-coloured tibialis");
+  const auto* paresis = drawn("paresis", "tibialis_anterior", Side::kRight);
+  ASSERT_NE(paresis, nullptr);
+  expectHue(image, structureCentre("tibialis_anterior", Side::kRight), paresis->color,
+            "right tibialis anterior next to bad entries");
+  // An empty status: a warning, nothing coloured.
+  renderer_->display().showStatus(vicc_msgs::EncodedStatus());
+  const QImage empty = renderer_->grab();
+  EXPECT_FALSE(renderer_->display().drawState().warnings.empty());
+  expectUncoloured(empty, structureCentre("tibialis_anterior", Side::kRight), "empty status");
+}
+
+TEST_F(AvatarDisplayRostest, AMissingMeshFileIsAnErrorNotACrash) {
+  rviz::Property* manifest = renderer_->display().subProp("Avatar manifest");
+  ASSERT_NE(manifest, nullptr);
+  manifest->setValue("/nonexistent/avatar.yaml");
+  EXPECT_EQ(renderer_->display().model(), nullptr);
+  EXPECT_NE(renderer_->display().modelError().find("/nonexistent/avatar.yaml"), std::string::npos)
+      << renderer_->display().modelError();
+  renderer_->grab();  // renders without a model
+  manifest->setValue("");
+  EXPECT_NE(renderer_->display().model(), nullptr);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "avatar_display_rostest");
+  ros::NodeHandle node;
+  QApplication application(argc, argv);
+  return RUN_ALL_TESTS();
+}
