@@ -5,6 +5,8 @@
 #include <QComboBox>
 #include <QIcon>
 #include <QLabel>
+#include <QList>
+#include <QPair>
 #include <QPixmap>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -39,16 +41,25 @@ void PatientPanel::refreshWidgets() {
 }
 
 void PatientPanel::refreshPatients() {
-  const QSignalBlocker blocker(patient_combo_);
-  patient_combo_->clear();
+  QList<QPair<QString, QString>> items;  // label, patient id
   for (const auto& patient : state_.patients.patients()) {
-    patient_combo_->addItem(QString::fromStdString(panel::describePatient(patient)),
-                            QString::fromStdString(patient.id));
+    items.append({QString::fromStdString(panel::describePatient(patient)),
+                  QString::fromStdString(patient.id)});
   }
   const std::string& selected = state_.patients.selected();
   if (!selected.empty() && !state_.patients.selectedIsListed()) {
     const QString id = QString::fromStdString(selected);
-    patient_combo_->addItem(id + (state_.patients.listed() ? " (not in the database)" : ""), id);
+    items.append({id + (state_.patients.listed() ? " (not in the database)" : ""), id});
+  }
+  const QSignalBlocker blocker(patient_combo_);
+  bool unchanged = patient_combo_->count() == items.size();
+  for (int i = 0; unchanged && i < items.size(); ++i) {
+    unchanged = patient_combo_->itemText(i) == items[i].first &&
+                patient_combo_->itemData(i).toString() == items[i].second;
+  }
+  if (!unchanged) {  // rebuilding would close an open drop-down list
+    patient_combo_->clear();
+    for (const auto& [label, id] : items) patient_combo_->addItem(label, id);
   }
   patient_combo_->setCurrentIndex(
       selected.empty() ? -1 : patient_combo_->findData(QString::fromStdString(selected)));
