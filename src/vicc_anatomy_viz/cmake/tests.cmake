@@ -73,3 +73,6 @@ target_compile_definitions(vicc_avatar_snapshot_test PRIVATE ${VICC_TEST_DEFINIT
   VICC_AVATAR_SNAPSHOT="$<TARGET_FILE:vicc_avatar_snapshot>")
 target_link_libraries(vicc_avatar_snapshot_test vicc_anatomy_viz_core Qt5::Gui gtest_main)
 add_dependencies(vicc_avatar_snapshot_test vicc_avatar_snapshot vicc_anatomy_viz_rviz)
+
+# The patient panel: its logic, avatar.launch, the plugin under Xvfb.
+include(cmake/patient_panel_tests.cmake)
