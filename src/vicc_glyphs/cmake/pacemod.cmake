@@ -17,6 +17,9 @@ add_library(vicc_glyphs_pacemod
   src/pacemod/curve_selection.cpp
   src/pacemod/contour_waves.cpp
   src/pacemod/periodic_waves.cpp
+  src/pacemod/offset_contour.cpp
+  src/pacemod/dashes.cpp
+  src/pacemod/inflate.cpp
 )
 target_compile_options(vicc_glyphs_pacemod PRIVATE ${VICC_WARNINGS})
 target_include_directories(vicc_glyphs_pacemod SYSTEM PUBLIC ${OpenCV_INCLUDE_DIRS})
@@ -37,4 +40,13 @@ if(CATKIN_ENABLE_TESTING)
   target_compile_definitions(vicc_glyphs_pacemod_test PRIVATE
     VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
   target_link_libraries(vicc_glyphs_pacemod_test vicc_glyphs_pacemod gtest_main)
+endif()
+
+# The `modify` subcommand of vicc_glyph (registered in src/tools/subcommands.cpp).
+if(TARGET vicc_glyph)
+  target_sources(vicc_glyph PRIVATE
+    src/tools/modify_request.cpp
+    src/tools/modify_report.cpp
+    src/tools/modify_command.cpp)
+  target_link_libraries(vicc_glyph vicc_glyphs_pacemod)
 endif()
