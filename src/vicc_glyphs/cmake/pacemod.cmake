@@ -15,6 +15,7 @@ add_library(vicc_glyphs_pacemod
   src/pacemod/skeleton_guard.cpp
   src/pacemod/polyline.cpp
   src/pacemod/curve_selection.cpp
+  src/pacemod/sparse_fowler_bartels.cpp
   src/pacemod/contour_waves.cpp
   src/pacemod/periodic_waves.cpp
   src/pacemod/offset_contour.cpp
@@ -49,4 +50,20 @@ if(TARGET vicc_glyph)
     src/tools/modify_report.cpp
     src/tools/modify_command.cpp)
   target_link_libraries(vicc_glyph vicc_glyphs_pacemod)
+endif()
+
+# The measurements of the PACEMOD bench, shared with its fast GoogleTest subset.
+if(TARGET vicc_glyphs_render AND TARGET vicc_glyphs_io)
+  add_library(vicc_glyphs_pacemod_measure STATIC
+    bench/pacemod/wave_measurement.cpp
+    bench/pacemod/wave_check.cpp)
+  target_compile_options(vicc_glyphs_pacemod_measure PRIVATE ${VICC_WARNINGS})
+  target_link_libraries(vicc_glyphs_pacemod_measure vicc_glyphs_pacemod)
+
+  add_executable(vicc_glyphs_pacemod_bench bench/pacemod/pacemod_bench.cpp)
+  target_compile_options(vicc_glyphs_pacemod_bench PRIVATE ${VICC_WARNINGS})
+  target_compile_definitions(vicc_glyphs_pacemod_bench PRIVATE
+    VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
+  target_link_libraries(vicc_glyphs_pacemod_bench vicc_glyphs_pacemod_measure vicc_glyphs_io
+    vicc_glyphs_render)
 endif()

@@ -6,7 +6,8 @@
 //    fit with alternating signs, each amplitude limited by the skeleton guard if one is given;
 // 3. sine: Fowler-Bartels moves the de Boor points so that the curve meets the translated knot
 //    points exactly (plus equal first derivatives at the closing point, for a smooth seam);
-//    rectangle: the corner knots are raised to multiplicity 3 by knot insertion before
+//    rectangle: the contour is fitted on the knot vector with the corner knots of multiplicity
+//    3, its de Boor points moved with their nearest knot point along the normal, then
 //    Fowler-Bartels and the flank spans are made straight; triangle and sawtooth consist of
 //    straight strips only, so their de Boor points are the corners and the points a third and
 //    two thirds along each strip (every third point a corner, Fig. 6.14B).
@@ -36,7 +37,7 @@ ContourWave modifyContour(const bspline::BSplineCurve& original,
                           const bspline::ArcLengthTable& table, Waveform waveform, int wave_count,
                           double amplitude, const SkeletonGuard* guard);
 
-/// Least-squares fit of `original` onto `knots` (a clamped cubic knot vector over [0, L]) with
+/// Least-squares fit (normal equations, sparse Cholesky) of `original` onto `knots` (a clamped cubic knot vector over [0, L]) with
 /// the spline parameter equal to the original's arc length: 8 samples per knot span.
 bspline::BSplineCurve fitOnArcLength(const bspline::BSplineCurve& original,
                                      const bspline::ArcLengthTable& table,
