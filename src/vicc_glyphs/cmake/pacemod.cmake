@@ -14,6 +14,7 @@ add_library(vicc_glyphs_pacemod
   src/pacemod/nearest_curve_point.cpp
   src/pacemod/skeleton_guard.cpp
   src/pacemod/polyline.cpp
+  src/pacemod/polygon_crossings.cpp
   src/pacemod/curve_selection.cpp
   src/pacemod/sparse_fowler_bartels.cpp
   src/pacemod/contour_waves.cpp

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 #include "vicc_glyphs/pacemod/polyline.hpp"
 #include "vicc_glyphs/pacemod/wave_layout.hpp"
 #include "wave_measurement.hpp"
@@ -45,12 +46,8 @@ bool inLobe(const Lobe& lobe, double arc) {
 
 int crossings(const DiffusionCurveImage& image) {
   std::vector<Polyline> lines;
-  int count = 0;
-  for (const DiffusionCurve& curve : image.curves) {
-    lines.push_back(sampleCurve(curve, 16));
-    count += countSelfIntersections(lines.back());
-  }
-  return count + countMutualIntersections(lines);
+  for (const DiffusionCurve& curve : image.curves) lines.push_back(sampleCurve(curve, 16));
+  return static_cast<int>(findCrossings(lines).size());
 }
 
 void checkContour(const Polyline& original, const Polyline& modified, const CurveWaveReport& report,

@@ -2,8 +2,7 @@
 // Independent measurements of a PACEMOD wave on the finished glyph (used by the bench and the
 // fast GoogleTest subset): the signed distance of the modified contour to the original one
 // (exact point-to-polyline distances: the distance field evaluated along the modified curve;
-// positive outside the original region), split into lobes of one sign, and polygon
-// intersection counts.
+// positive outside the original region), split into lobes of one sign.
 
 #include <vector>
 
@@ -31,11 +30,6 @@ struct ContourMeasure {
 /// belong to no lobe; a lobe ends where the sign flips.
 ContourMeasure measureContour(const Polyline& original, const Polyline& modified,
                               double threshold_px);
-
-/// Proper crossings between non-adjacent segments of one closed polyline.
-int countSelfIntersections(const Polyline& line);
-/// Proper crossings between segments of different polylines of `lines`.
-int countMutualIntersections(const std::vector<Polyline>& lines);
 
 }  // namespace measure
 }  // namespace pacemod

@@ -1,5 +1,6 @@
 #include "vicc_glyphs/pacemod/contour_waves.hpp"
 
+#include <Eigen/Cholesky>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <stdexcept>
@@ -35,10 +36,61 @@ std::vector<bspline::CurveConstraint> seamConstraints(const BSplineCurve& fit) {
   return {{fit.domainBegin(), mean, 1}, {fit.domainEnd(), mean, 1}};
 }
 
-void straighten(std::vector<Point2>& points, int first) {
-  const Point2 from = points[first], to = points[first + 3];
-  points[first + 1] = from + (to - from) / 3.0;
-  points[first + 2] = from + 2.0 * (to - from) / 3.0;
+// What the strips between corners follow: the original contour offset along the normal by an
+// amount that changes linearly from one corner to the next.
+struct StripFrame {
+  const BSplineCurve& original;
+  const bspline::ArcLengthTable& table;
+  const BSplineCurve& fit;
+  double area;
+};
+
+constexpr int kStripSamples = 9;
+
+// Inner control points of the cubic strip points[first .. first+3] between arc lengths l0 and
+// l1: least squares (ends fixed) to the offset contour with offsets w0 -> w1. On a straight
+// contour this is the straight line with its points at a third and two thirds (Fig. 6.14B);
+// on a curved one the strip bends with the contour, so the wave keeps its amplitude.
+void fitStrip(std::vector<Point2>& points, int first, double l0, double l1, double w0, double w1,
+              const StripFrame& frame) {
+  const Point2 p0 = points[first], p3 = points[first + 3];
+  Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
+  Eigen::Matrix<double, 2, 2> rhs = Eigen::Matrix<double, 2, 2>::Zero();
+  for (int k = 1; k <= kStripSamples; ++k) {
+    const double t = static_cast<double>(k) / (kStripSamples + 1);
+    const double l = l0 + t * (l1 - l0);
+    const Point2 target = frame.original.pointAt(frame.table.parameterAt(l)) +
+                          ((1 - t) * w0 + t * w1) * outwardNormal(frame.fit, l, frame.area);
+    const double b0 = (1 - t) * (1 - t) * (1 - t), b1 = 3 * t * (1 - t) * (1 - t),
+                 b2 = 3 * t * t * (1 - t), b3 = t * t * t;
+    const Eigen::Vector2d basis(b1, b2);
+    normal += basis * basis.transpose();
+    rhs += basis * (target - b0 * p0 - b3 * p3).transpose();
+  }
+  const Eigen::Matrix2d inner = normal.ldlt().solve(rhs);
+  points[first + 1] = inner.row(0).transpose();
+  points[first + 2] = inner.row(1).transpose();
+}
+
+double signedOffset(const ContourWave& wave, std::size_t peak) {
+  return wave.layout.peaks[peak].sign * wave.guarded[peak].amplitude;
+}
+
+// Index of the layout peak at exactly `arc_length` (strip ends are knot points).
+std::size_t peakAt(const WaveLayout& layout, double arc_length) {
+  for (std::size_t i = 0; i < layout.peaks.size(); ++i) {
+    if (layout.peaks[i].arc_length == arc_length) return i;
+  }
+  throw std::invalid_argument("peakAt: strip end is not a knot point");
+}
+
+void fitStrips(std::vector<Point2>& points, const BSplineCurve& curve, const ContourWave& wave,
+               const StripFrame& frame) {
+  for (const ArcInterval& span : wave.layout.straight_spans) {
+    fitStrip(points, cornerControlIndex(curve, span.begin), span.begin, span.end,
+             signedOffset(wave, peakAt(wave.layout, span.begin)),
+             signedOffset(wave, peakAt(wave.layout, span.end)), frame);
+  }
 }
 
 std::vector<Point2> targetsOf(const ContourWave& wave) {
@@ -91,22 +143,20 @@ BSplineCurve rectangleWave(const BSplineCurve& original, const bspline::ArcLengt
   raised.setControlPoints(points);
   BSplineCurve moved = translateKnotPoints(raised, wave);
   points = moved.controlPoints();
-  for (const ArcInterval& span : wave.layout.straight_spans) {
-    straighten(points, cornerControlIndex(moved, span.begin));
-  }
+  fitStrips(points, moved, wave, {original, table, fit, area});
   moved.setControlPoints(std::move(points));
   return moved;
 }
 
 // Triangle and sawtooth: straight strips between the translated corners.
-BSplineCurve stripWave(const ContourWave& wave) {
+BSplineCurve stripWave(const ContourWave& wave, const StripFrame& frame) {
   const std::vector<Point2> corners = targetsOf(wave);
   std::vector<Point2> points{corners.front()};
-  for (std::size_t i = 1; i < corners.size(); ++i) {
-    points.insert(points.end(), 3, corners[i]);
-    straighten(points, static_cast<int>(points.size()) - 4);
-  }
-  return BSplineCurve(3, knotVector(wave.layout), std::move(points));
+  for (std::size_t i = 1; i < corners.size(); ++i) points.insert(points.end(), 3, corners[i]);
+  BSplineCurve curve(3, knotVector(wave.layout), points);
+  fitStrips(points, curve, wave, frame);
+  curve.setControlPoints(std::move(points));
+  return curve;
 }
 
 }  // namespace
@@ -153,11 +203,16 @@ int cornerControlIndex(const BSplineCurve& curve, double knot) {
 
 ContourWave modifyContour(const BSplineCurve& original, const bspline::ArcLengthTable& table,
                           Waveform waveform, int wave_count, double amplitude,
-                          const SkeletonGuard* guard) {
+                          const SkeletonGuard* guard, const std::vector<double>& caps) {
   if (!original.isClosed(1e-6)) throw std::invalid_argument("modifyContour: contour is not closed");
-  ContourWave wave{original, waveLayout(waveform, wave_count, table.totalLength()), {}, {}, {}};
-  const BSplineCurve fit = fitOnArcLength(original, table, knotVector(wave.layout, true));
-  const double area = bspline::signedArea(fit);
+  ContourWave wave{original, waveLayout(waveform, wave_count, table.totalLength()), {}, {}, {}, {}};
+  // The smooth fit with single knots every quarter period (the sine's layout) is the sine's base
+  // and gives every waveform its normals: the least-squares ringing next to the icon's own
+  // corners dies out within a few such short spans, whereas the half-period spans of the sharp
+  // layouts would carry it far along the contour.
+  const BSplineCurve frame_fit = fitOnArcLength(
+      original, table, knotVector(waveLayout(Waveform::Sine, wave_count, table.totalLength())));
+  const double area = bspline::signedArea(frame_fit);
   for (const WavePeak& peak : wave.layout.peaks) {
     const bool closing = peak.arc_length >= wave.layout.length;
     // The closing point repeats the first: same point, direction and amplitude.
@@ -165,25 +220,31 @@ ContourWave modifyContour(const BSplineCurve& original, const bspline::ArcLength
       wave.knot_points.push_back(wave.knot_points.front());
       wave.directions.push_back(wave.directions.front());
       wave.guarded.push_back(wave.guarded.front());
+      wave.capped.push_back(wave.capped.front());
       continue;
     }
     const Point2 knot = original.pointAt(table.parameterAt(peak.arc_length));
-    const Point2 direction = peak.sign * outwardNormal(fit, peak.arc_length, area);
+    const Point2 direction = peak.sign * outwardNormal(frame_fit, peak.arc_length, area);
     wave.knot_points.push_back(knot);
     wave.directions.push_back(direction);
-    wave.guarded.push_back(guard ? guard->limit(knot, direction, amplitude)
-                                 : GuardResult{std::max(amplitude, 0.0), false, 0});
+    GuardResult allowed = guard ? guard->limit(knot, direction, amplitude)
+                                : GuardResult{std::max(amplitude, 0.0), false, 0};
+    const std::size_t i = wave.guarded.size();
+    const bool capped = i < caps.size() && caps[i] < allowed.amplitude;
+    if (capped) allowed.amplitude = std::max(caps[i], 0.0);
+    wave.guarded.push_back(allowed);
+    wave.capped.push_back(capped);
   }
   switch (waveform) {
     case Waveform::Sine:
-      wave.curve = translateKnotPoints(fit, wave);
+      wave.curve = translateKnotPoints(frame_fit, wave);
       break;
     case Waveform::Rectangle:
-      wave.curve = rectangleWave(original, table, fit, area, wave);
+      wave.curve = rectangleWave(original, table, frame_fit, area, wave);
       break;
     case Waveform::Triangle:
     case Waveform::Sawtooth:
-      wave.curve = stripWave(wave);
+      wave.curve = stripWave(wave, {original, table, frame_fit, area});
       break;
   }
   return wave;
