@@ -31,18 +31,6 @@ install(TARGETS vicc_glyphs_pacemod
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 
-if(CATKIN_ENABLE_TESTING)
-  catkin_add_gtest(vicc_glyphs_pacemod_test
-    test/pacemod/WaveLayoutTest.cpp
-    test/pacemod/FeatureTransformTest.cpp
-    test/pacemod/SkeletonGuardTest.cpp
-    test/pacemod/ContourWavesTest.cpp
-  )
-  target_compile_options(vicc_glyphs_pacemod_test PRIVATE ${VICC_WARNINGS})
-  target_compile_definitions(vicc_glyphs_pacemod_test PRIVATE
-    VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
-  target_link_libraries(vicc_glyphs_pacemod_test vicc_glyphs_pacemod gtest_main)
-endif()
 
 # The `modify` subcommand of vicc_glyph (registered in src/tools/subcommands.cpp).
 if(TARGET vicc_glyph)
@@ -67,4 +55,40 @@ if(TARGET vicc_glyphs_render AND TARGET vicc_glyphs_io)
     VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
   target_link_libraries(vicc_glyphs_pacemod_bench vicc_glyphs_pacemod_measure vicc_glyphs_io
     vicc_glyphs_render)
+endif()
+
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(vicc_glyphs_pacemod_test
+    test/pacemod/WaveLayoutTest.cpp
+    test/pacemod/FeatureTransformTest.cpp
+    test/pacemod/SkeletonGuardTest.cpp
+    test/pacemod/ContourWavesTest.cpp
+    test/pacemod/OffsetContourTest.cpp
+  )
+  target_compile_options(vicc_glyphs_pacemod_test PRIVATE ${VICC_WARNINGS})
+  target_compile_definitions(vicc_glyphs_pacemod_test PRIVATE
+    VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
+  target_link_libraries(vicc_glyphs_pacemod_test vicc_glyphs_pacemod gtest_main)
+  # Real icons end to end (imports, renders): the fast subset of bench/pacemod.
+  if(TARGET vicc_glyphs_pacemod_measure)
+    catkin_add_gtest(vicc_glyphs_pacemod_glyph_test test/pacemod/PacemodGlyphTest.cpp)
+    target_compile_options(vicc_glyphs_pacemod_glyph_test PRIVATE ${VICC_WARNINGS})
+    target_include_directories(vicc_glyphs_pacemod_glyph_test PRIVATE bench/pacemod)
+    target_compile_definitions(vicc_glyphs_pacemod_glyph_test PRIVATE
+      VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data"
+      VICC_GLYPHS_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/test/data")
+    target_link_libraries(vicc_glyphs_pacemod_glyph_test vicc_glyphs_pacemod_measure
+      vicc_glyphs_io vicc_glyphs_render gtest_main)
+  endif()
+  # vicc_glyph modify as a user runs it.
+  if(TARGET vicc_glyph)
+    catkin_add_gtest(vicc_glyphs_pacemod_cli_test test/pacemod/ModifyCliTest.cpp)
+    target_compile_options(vicc_glyphs_pacemod_cli_test PRIVATE ${VICC_WARNINGS})
+    target_compile_definitions(vicc_glyphs_pacemod_cli_test PRIVATE
+      VICC_GLYPH_BINARY="$<TARGET_FILE:vicc_glyph>"
+      VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
+    target_include_directories(vicc_glyphs_pacemod_cli_test SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
+    target_link_libraries(vicc_glyphs_pacemod_cli_test vicc_glyphs_io ${OpenCV_LIBS} gtest_main)
+    add_dependencies(vicc_glyphs_pacemod_cli_test vicc_glyph)
+  endif()
 endif()

@@ -3,7 +3,8 @@
 // rendered; then, on the result, the waves along each modified contour are counted and their
 // amplitudes measured from the distance to the original contour (wave_measurement.hpp), and
 // all polygons are checked for crossings. Prints Markdown tables (see README.md here).
-// Usage: vicc_glyphs_pacemod_bench [ICON_DIR] [--quick]
+// Usage: vicc_glyphs_pacemod_bench [ICON_DIR] [--quick] [--verbose] [--stretch-at-corners]
+//        [--opencv-labels]
 
 #include <algorithm>
 #include <cstdio>
@@ -37,6 +38,7 @@ double threadMilliseconds() {
 }
 
 bool verbose = false;
+WaveOptions options;
 
 struct Totals {
   int glyphs = 0;
@@ -61,7 +63,7 @@ void runGlyph(const fs::path& icon, const WaveSpec& spec, DiffusionCurveRenderer
   const DiffusionCurveImage original = image;
   const double modify_start = threadMilliseconds();
   const std::vector<CurveWaveReport> reports =
-      applyWaves(image, selectCurves(image, {}), spec, kSizeMm);
+      applyWaves(image, selectCurves(image, {}), spec, kSizeMm, options);
   const double render_start = threadMilliseconds();
   renderer.render(image, RenderOptions{}, result);
   const double end = threadMilliseconds();
@@ -79,17 +81,34 @@ void runGlyph(const fs::path& icon, const WaveSpec& spec, DiffusionCurveRenderer
                  spec.waves_per_mm * 10, spec.amplitude_mm, check.new_crossings, check.lobes_ok,
                  check.lobes_checked, 100 * check.worst_error, check.count_ok, check.count_checked);
   }
+  if (verbose) {
+    for (const std::string& failure : check.failures)
+      std::fprintf(stderr, "    %s\n", failure.c_str());
+  }
   measure::add(totals.check, check);
+}
+
+const char* kColumns =
+    "| glyphs | contours | count ok (decidable) | with all waves | undecidable | lobes within 10 % "
+    "| "
+    "median amp. err % | worst amp. err % | reduced knot points | new crossings | modify ms | "
+    "render ms | total ms median | total ms max |\n"
+    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+
+void printHeader(const char* first) {
+  std::printf("| %s ", first);
+  std::fputs(kColumns, stdout);
 }
 
 void printRow(const std::string& label, const Totals& t) {
   const measure::GlyphCheck& c = t.check;
   std::printf(
-      "| %s | %d | %d | %d/%d | %d/%d | %.1f | %.1f | %d | %d | %d | %.1f | %.1f | %.1f | %.1f |\n",
-      label.c_str(), t.glyphs, c.contours, c.count_ok, c.count_checked, c.lobes_ok, c.lobes_checked,
-      100.0 * c.median_error(), 100.0 * c.worst_error, c.reduced_peaks, c.flattened_contours,
-      c.new_crossings, median(t.modify_ms), median(t.render_ms), median(t.total_ms),
-      maximum(t.total_ms));
+      "| %s | %d | %d | %d/%d | %d | %d | %d/%d | %.1f | %.1f | %d | %d | %.1f | %.1f | %.1f | "
+      "%.1f |\n",
+      label.c_str(), t.glyphs, c.contours, c.count_ok, c.count_checked, c.contours_with_all_waves,
+      c.flattened_contours, c.lobes_ok, c.lobes_checked, 100.0 * c.median_error(),
+      100.0 * c.worst_error, c.reduced_peaks, c.new_crossings, median(t.modify_ms),
+      median(t.render_ms), median(t.total_ms), maximum(t.total_ms));
 }
 
 }  // namespace
@@ -103,6 +122,10 @@ int main(int argc, char** argv) {
       quick = true;
     } else if (arg == "--verbose") {
       verbose = true;
+    } else if (arg == "--stretch-at-corners") {
+      options.stretch_at_corners = true;
+    } else if (arg == "--opencv-labels") {
+      options.feature_transform = FeatureTransform::OpenCvLabels;
     } else {
       dir = arg;
     }
@@ -120,11 +143,7 @@ int main(int argc, char** argv) {
   RenderResult result;
   std::map<std::string, Totals> by_waveform;
   std::printf("%zu icons, %d px = %.0f mm\n\n", icons.size(), kSize, kSizeMm);
-  std::printf(
-      "| waveform, waves/10 mm, amplitude mm | glyphs | contours | count ok | lobes within 10 %% | "
-      "median amp. err %% | worst amp. err %% | reduced peaks | flattened contours | new crossings "
-      "| modify ms | render ms | total ms (median) | total ms (max) |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  printHeader("waveform, waves/10 mm, amplitude mm");
   for (Waveform waveform :
        {Waveform::Sine, Waveform::Triangle, Waveform::Sawtooth, Waveform::Rectangle}) {
     for (double f : frequencies) {
@@ -144,11 +163,8 @@ int main(int argc, char** argv) {
       }
     }
   }
-  std::printf(
-      "\n| waveform (all frequencies and amplitudes) | glyphs | contours | count ok | lobes within "
-      "10 %% | median amp. err %% | worst amp. err %% | reduced peaks | flattened contours | new "
-      "crossings | modify ms | render ms | total ms (median) | total ms (max) |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("\n");
+  printHeader("waveform (all frequencies and amplitudes)");
   for (const auto& [name, totals] : by_waveform) printRow(name, totals);
   return 0;
 }

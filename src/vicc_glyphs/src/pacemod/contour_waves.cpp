@@ -7,6 +7,7 @@
 
 #include "vicc_glyphs/bspline/fitting.hpp"
 #include "vicc_glyphs/bspline/frenet_frame.hpp"
+#include "vicc_glyphs/pacemod/polyline.hpp"
 #include "vicc_glyphs/pacemod/sparse_fowler_bartels.hpp"
 
 namespace vicc_glyphs {
@@ -16,6 +17,9 @@ namespace {
 using bspline::BSplineCurve;
 
 constexpr int kSamplesPerSpan = 8;
+constexpr int kCornerSteps = 8;
+constexpr double kCornerTolerance = 0.01;
+constexpr double kMaxCornerStretch = 2.0;
 
 // Outward unit normal of the fit; at the closing point the mean of both ends' normals, so that
 // the first and the last knot point move to the same place and the contour stays closed.
@@ -73,7 +77,7 @@ void fitStrip(std::vector<Point2>& points, int first, double l0, double l1, doub
 }
 
 double signedOffset(const ContourWave& wave, std::size_t peak) {
-  return wave.layout.peaks[peak].sign * wave.guarded[peak].amplitude;
+  return wave.layout.peaks[peak].sign * wave.translations[peak];
 }
 
 // Index of the layout peak at exactly `arc_length` (strip ends are knot points).
@@ -93,10 +97,26 @@ void fitStrips(std::vector<Point2>& points, const BSplineCurve& curve, const Con
   }
 }
 
+// How far to move `knot` along `direction` so that it ends `amplitude` away from its own
+// contour: `amplitude` itself, except next to a sharp convex corner of the icon, where the other
+// side of the corner comes closer than the knot point; there the translation grows (secant
+// steps, at most kMaxCornerStretch times the amplitude) until the distance is the amplitude.
+double translationForDistance(const Point2& knot, const Point2& direction, double amplitude,
+                              const Polyline& contour) {
+  if (!(amplitude > 0.0)) return 0.0;
+  double t = amplitude;
+  for (int step = 0; step < kCornerSteps; ++step) {
+    const double shortfall = amplitude - distanceToPolyline(knot + t * direction, contour);
+    if (shortfall < kCornerTolerance * amplitude) break;
+    t = std::min(t + shortfall, kMaxCornerStretch * amplitude);
+  }
+  return t;
+}
+
 std::vector<Point2> targetsOf(const ContourWave& wave) {
   std::vector<Point2> targets;
   for (std::size_t i = 0; i < wave.knot_points.size(); ++i) {
-    targets.push_back(wave.knot_points[i] + wave.guarded[i].amplitude * wave.directions[i]);
+    targets.push_back(wave.knot_points[i] + wave.translations[i] * wave.directions[i]);
   }
   return targets;
 }
@@ -137,8 +157,8 @@ BSplineCurve rectangleWave(const BSplineCurve& original, const bspline::ArcLengt
   for (std::size_t i = 0; i < points.size(); ++i) {
     const double greville = (knots[i + 1] + knots[i + 2] + knots[i + 3]) / 3.0;
     const std::size_t peak = nearestPeak(wave.layout, greville);
-    points[i] += wave.guarded[peak].amplitude * wave.layout.peaks[peak].sign *
-                 outwardNormal(fit, greville, area);
+    points[i] +=
+        wave.translations[peak] * wave.layout.peaks[peak].sign * outwardNormal(fit, greville, area);
   }
   raised.setControlPoints(points);
   BSplineCurve moved = translateKnotPoints(raised, wave);
@@ -203,9 +223,11 @@ int cornerControlIndex(const BSplineCurve& curve, double knot) {
 
 ContourWave modifyContour(const BSplineCurve& original, const bspline::ArcLengthTable& table,
                           Waveform waveform, int wave_count, double amplitude,
-                          const SkeletonGuard* guard, const std::vector<double>& caps) {
+                          const SkeletonGuard* guard, const std::vector<double>& caps,
+                          bool stretch_at_corners) {
   if (!original.isClosed(1e-6)) throw std::invalid_argument("modifyContour: contour is not closed");
-  ContourWave wave{original, waveLayout(waveform, wave_count, table.totalLength()), {}, {}, {}, {}};
+  ContourWave wave{original, waveLayout(waveform, wave_count, table.totalLength()), {}, {}, {}, {},
+                   {}};
   // The smooth fit with single knots every quarter period (the sine's layout) is the sine's base
   // and gives every waveform its normals: the least-squares ringing next to the icon's own
   // corners dies out within a few such short spans, whereas the half-period spans of the sharp
@@ -213,6 +235,10 @@ ContourWave modifyContour(const BSplineCurve& original, const bspline::ArcLength
   const BSplineCurve frame_fit = fitOnArcLength(
       original, table, knotVector(waveLayout(Waveform::Sine, wave_count, table.totalLength())));
   const double area = bspline::signedArea(frame_fit);
+  Polyline contour_line;
+  if (stretch_at_corners) {
+    for (double u : table.parameters()) contour_line.push_back(original.pointAt(u));
+  }
   for (const WavePeak& peak : wave.layout.peaks) {
     const bool closing = peak.arc_length >= wave.layout.length;
     // The closing point repeats the first: same point, direction and amplitude.
@@ -221,6 +247,7 @@ ContourWave modifyContour(const BSplineCurve& original, const bspline::ArcLength
       wave.directions.push_back(wave.directions.front());
       wave.guarded.push_back(wave.guarded.front());
       wave.capped.push_back(wave.capped.front());
+      wave.translations.push_back(wave.translations.front());
       continue;
     }
     const Point2 knot = original.pointAt(table.parameterAt(peak.arc_length));
@@ -234,6 +261,10 @@ ContourWave modifyContour(const BSplineCurve& original, const bspline::ArcLength
     if (capped) allowed.amplitude = std::max(caps[i], 0.0);
     wave.guarded.push_back(allowed);
     wave.capped.push_back(capped);
+    wave.translations.push_back(
+        stretch_at_corners
+            ? translationForDistance(knot, direction, allowed.amplitude, contour_line)
+            : allowed.amplitude);
   }
   switch (waveform) {
     case Waveform::Sine:

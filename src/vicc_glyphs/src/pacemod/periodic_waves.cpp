@@ -32,6 +32,7 @@ struct Context {
   const WaveSpec& spec;
   double px_per_mm;
   const SkeletonGuard* guard;
+  bool stretch_at_corners;
 };
 
 void checkArguments(const DiffusionCurveImage& image, const std::vector<int>& curves,
@@ -208,7 +209,7 @@ std::vector<CurveWaveReport> applyWaves(DiffusionCurveImage& image,
                                             options.field_grid_scale, options.feature_transform);
     guard = std::make_unique<SkeletonGuard>(*field, options.skeleton_offset_mm * px_per_mm);
   }
-  const Context context{spec, px_per_mm, guard.get()};
+  const Context context{spec, px_per_mm, guard.get(), options.stretch_at_corners};
   std::vector<CurveWaveReport> reports(curves.size());
   std::map<int, std::unique_ptr<WavedContour>> waved;
   for (std::size_t k = 0; k < curves.size(); ++k) {

@@ -33,6 +33,9 @@ struct WaveOptions {
   double skeleton_offset_mm = 0.3;
   double field_grid_scale = 1.0;  ///< feature-transform grid pixels per image pixel
   FeatureTransform feature_transform = FeatureTransform::Maurer;
+  /// Lengthen translations next to sharp convex corners so that the knot points keep the full
+  /// distance from the contour (see ContourWave::translations).
+  bool stretch_at_corners = false;
 };
 
 /// A knot point whose translation was shortened.
