@@ -92,3 +92,12 @@ if(CATKIN_ENABLE_TESTING)
     add_dependencies(vicc_glyphs_pacemod_cli_test vicc_glyph)
   endif()
 endif()
+
+# OpenCV labels vs Maurer for the skeleton guard (bench/pacemod/README.md).
+if(TARGET vicc_glyphs_io)
+  add_executable(vicc_glyphs_feature_transform_bench bench/pacemod/feature_transform_bench.cpp)
+  target_compile_options(vicc_glyphs_feature_transform_bench PRIVATE ${VICC_WARNINGS})
+  target_compile_definitions(vicc_glyphs_feature_transform_bench PRIVATE
+    VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
+  target_link_libraries(vicc_glyphs_feature_transform_bench vicc_glyphs_pacemod vicc_glyphs_io)
+endif()

@@ -18,8 +18,36 @@ using bspline::BSplineCurve;
 
 constexpr int kSamplesPerSpan = 8;
 constexpr int kCornerSteps = 8;
+constexpr double kCornerSnap = 0.2;
 constexpr double kCornerTolerance = 0.01;
 constexpr double kMaxCornerStretch = 2.0;
+
+// The knot vector `knots` (clamped cubic over [0, L]) with the contour's own corners (its C0
+// joins) added as triple knots at their arc lengths, so that re-fitting keeps the icon's sharp
+// corners instead of rounding them over a knot span. A corner closer than kCornerSnap of a span
+// to an existing knot raises that knot to multiplicity 3 instead.
+std::vector<double> withContourCorners(std::vector<double> knots, const BSplineCurve& original,
+                                       const bspline::ArcLengthTable& table) {
+  const double end = knots.back();
+  for (double b : original.breakpoints()) {
+    if (b <= original.domainBegin() || b >= original.domainEnd() ||
+        original.multiplicity(b) < original.degree()) {
+      continue;
+    }
+    const double l = table.lengthAt(b);
+    const auto upper = std::upper_bound(knots.begin(), knots.end(), l);
+    const double after = upper == knots.end() ? end : *upper;
+    const double before = *(upper - 1);
+    const double span = after - before;
+    double at = l;
+    if (l - before < kCornerSnap * span) at = before;
+    if (after - l < kCornerSnap * span) at = after;
+    if (at <= 0.0 || at >= end) continue;
+    const int present = static_cast<int>(std::count(knots.begin(), knots.end(), at));
+    knots.insert(std::upper_bound(knots.begin(), knots.end(), at), std::max(0, 3 - present), at);
+  }
+  return knots;
+}
 
 // Outward unit normal of the fit; at the closing point the mean of both ends' normals, so that
 // the first and the last knot point move to the same place and the contour stays closed.
@@ -91,7 +119,10 @@ std::size_t peakAt(const WaveLayout& layout, double arc_length) {
 void fitStrips(std::vector<Point2>& points, const BSplineCurve& curve, const ContourWave& wave,
                const StripFrame& frame) {
   for (const ArcInterval& span : wave.layout.straight_spans) {
-    fitStrip(points, cornerControlIndex(curve, span.begin), span.begin, span.end,
+    // A corner of the icon inside the strip splits it; the fit already follows the contour there.
+    const int first = cornerControlIndex(curve, span.begin);
+    if (cornerControlIndex(curve, span.end) != first + 3) continue;
+    fitStrip(points, first, span.begin, span.end,
              signedOffset(wave, peakAt(wave.layout, span.begin)),
              signedOffset(wave, peakAt(wave.layout, span.end)), frame);
   }
@@ -151,7 +182,8 @@ BSplineCurve rectangleWave(const BSplineCurve& original, const bspline::ArcLengt
                            const BSplineCurve& fit, double area, const ContourWave& wave) {
   // Fitting on the final knot vector gives the same curve space as raising the corner knots of
   // the smooth fit by knot insertion, without Boehm's O(n) copy per inserted knot.
-  BSplineCurve raised = fitOnArcLength(original, table, knotVector(wave.layout));
+  BSplineCurve raised =
+      fitOnArcLength(original, table, withContourCorners(knotVector(wave.layout), original, table));
   std::vector<Point2> points = raised.controlPoints();
   const std::vector<double>& knots = raised.knots();
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -233,7 +265,9 @@ ContourWave modifyContour(const BSplineCurve& original, const bspline::ArcLength
   // corners dies out within a few such short spans, whereas the half-period spans of the sharp
   // layouts would carry it far along the contour.
   const BSplineCurve frame_fit = fitOnArcLength(
-      original, table, knotVector(waveLayout(Waveform::Sine, wave_count, table.totalLength())));
+      original, table,
+      withContourCorners(knotVector(waveLayout(Waveform::Sine, wave_count, table.totalLength())),
+                         original, table));
   const double area = bspline::signedArea(frame_fit);
   Polyline contour_line;
   if (stretch_at_corners) {
