@@ -1,3 +1,4 @@
+#include "modify_command.hpp"
 #include "render_command.hpp"
 #include "subcommand.hpp"
 
@@ -6,6 +7,7 @@ namespace vicc_glyphs::tools {
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table{
       {"render", "render a DCI, SVG icon or PNG to a PNG image", &runRenderCommand},
+      {"modify", "PACEMOD waves, dashes, inflate on an icon; PNG + DCI + report", &runModifyCommand},
   };
   return table;
 }
