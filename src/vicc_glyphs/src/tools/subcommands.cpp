@@ -1,3 +1,5 @@
+#include "fit_command.hpp"
+#include "levels_command.hpp"
 #include "render_command.hpp"
 #include "subcommand.hpp"
 
@@ -6,6 +8,8 @@ namespace vicc_glyphs::tools {
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table{
       {"render", "render a DCI, SVG icon or PNG to a PNG image", &runRenderCommand},
+      {"levels", "level-to-stimulus table of the perception model", &runLevelsCommand},
+      {"fit-model", "fit the perception model to survey answers (CSV)", &runFitCommand},
   };
   return table;
 }
