@@ -1,5 +1,6 @@
 #include "fit_command.hpp"
 #include "levels_command.hpp"
+#include "modify_command.hpp"
 #include "render_command.hpp"
 #include "subcommand.hpp"
 
@@ -10,6 +11,7 @@ const std::vector<Subcommand>& subcommands() {
       {"render", "render a DCI, SVG icon or PNG to a PNG image", &runRenderCommand},
       {"levels", "level-to-stimulus table of the perception model", &runLevelsCommand},
       {"fit-model", "fit the perception model to survey answers (CSV)", &runFitCommand},
+      {"modify", "PACEMOD waves, dashes, inflate on an icon; PNG + DCI + report", &runModifyCommand},
   };
   return table;
 }

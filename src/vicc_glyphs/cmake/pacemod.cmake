@@ -1,0 +1,52 @@
+# PACEMOD (thesis 6.2.3-6.2.4): periodic contour modifications of diffusion curve icons.
+# ROS-free: the DCI, the B-spline toolkit and OpenCV (distance transform). Included after
+# cli.cmake, as it adds the `modify` subcommand to vicc_glyph.
+if(NOT TARGET vicc_glyphs_bspline)
+  message(STATUS "vicc_glyphs: PACEMOD needs the B-spline toolkit; not built")
+  return()
+endif()
+find_package(OpenCV REQUIRED COMPONENTS core imgproc)
+
+add_library(vicc_glyphs_pacemod
+  src/pacemod/wave_spec.cpp
+  src/pacemod/wave_layout.cpp
+  src/pacemod/feature_transform.cpp
+  src/pacemod/nearest_curve_point.cpp
+  src/pacemod/skeleton_guard.cpp
+  src/pacemod/polyline.cpp
+  src/pacemod/curve_selection.cpp
+  src/pacemod/contour_waves.cpp
+  src/pacemod/periodic_waves.cpp
+  src/pacemod/offset_contour.cpp
+  src/pacemod/dashes.cpp
+  src/pacemod/inflate.cpp
+)
+target_compile_options(vicc_glyphs_pacemod PRIVATE ${VICC_WARNINGS})
+target_include_directories(vicc_glyphs_pacemod SYSTEM PUBLIC ${OpenCV_INCLUDE_DIRS})
+target_link_libraries(vicc_glyphs_pacemod vicc_glyphs_bspline vicc_glyphs_dci ${OpenCV_LIBS})
+
+install(TARGETS vicc_glyphs_pacemod
+  LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
+  ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
+
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(vicc_glyphs_pacemod_test
+    test/pacemod/WaveLayoutTest.cpp
+    test/pacemod/FeatureTransformTest.cpp
+    test/pacemod/SkeletonGuardTest.cpp
+    test/pacemod/ContourWavesTest.cpp
+  )
+  target_compile_options(vicc_glyphs_pacemod_test PRIVATE ${VICC_WARNINGS})
+  target_compile_definitions(vicc_glyphs_pacemod_test PRIVATE
+    VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
+  target_link_libraries(vicc_glyphs_pacemod_test vicc_glyphs_pacemod gtest_main)
+endif()
+
+# The `modify` subcommand of vicc_glyph (registered in src/tools/subcommands.cpp).
+if(TARGET vicc_glyph)
+  target_sources(vicc_glyph PRIVATE
+    src/tools/modify_request.cpp
+    src/tools/modify_report.cpp
+    src/tools/modify_command.cpp)
+  target_link_libraries(vicc_glyph vicc_glyphs_pacemod)
+endif()

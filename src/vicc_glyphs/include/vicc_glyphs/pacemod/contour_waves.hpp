@@ -1,0 +1,50 @@
+#pragma once
+// One closed contour with a periodic geometric wave (thesis 6.2.3.3 and 6.2.4.1):
+// 1. the contour is re-fitted by least squares onto the layout's knots, now placed at arc-length
+//    positions (the spline is re-parametrised by the original's arc length, domain [0, L]);
+// 2. the knot points (wave peaks / corners) are translated along the outward normal of that
+//    fit with alternating signs, each amplitude limited by the skeleton guard if one is given;
+// 3. sine: Fowler-Bartels moves the de Boor points so that the curve meets the translated knot
+//    points exactly (plus equal first derivatives at the closing point, for a smooth seam);
+//    rectangle: the corner knots are raised to multiplicity 3 by knot insertion before
+//    Fowler-Bartels and the flank spans are made straight; triangle and sawtooth consist of
+//    straight strips only, so their de Boor points are the corners and the points a third and
+//    two thirds along each strip (every third point a corner, Fig. 6.14B).
+
+#include <vector>
+
+#include "vicc_glyphs/bspline/arc_length.hpp"
+#include "vicc_glyphs/bspline/bspline_curve.hpp"
+#include "vicc_glyphs/pacemod/skeleton_guard.hpp"
+#include "vicc_glyphs/pacemod/wave_layout.hpp"
+
+namespace vicc_glyphs {
+namespace pacemod {
+
+struct ContourWave {
+  bspline::BSplineCurve curve;  ///< modified contour over [0, L] (L = original arc length)
+  WaveLayout layout;
+  std::vector<Point2> knot_points;   ///< per layout peak: the original contour point k
+  std::vector<Point2> directions;    ///< per layout peak: unit translation direction (sign * n)
+  std::vector<GuardResult> guarded;  ///< per layout peak: the amplitude actually applied
+};
+
+/// `original` must be closed (first == last point) and have a tangent everywhere; `table` its
+/// arc-length table; amplitude in image pixels (>= 0); `guard` may be null (no prevention).
+/// Throws std::invalid_argument for an open curve or wave_count < 1.
+ContourWave modifyContour(const bspline::BSplineCurve& original,
+                          const bspline::ArcLengthTable& table, Waveform waveform, int wave_count,
+                          double amplitude, const SkeletonGuard* guard);
+
+/// Least-squares fit of `original` onto `knots` (a clamped cubic knot vector over [0, L]) with
+/// the spline parameter equal to the original's arc length: 8 samples per knot span.
+bspline::BSplineCurve fitOnArcLength(const bspline::BSplineCurve& original,
+                                     const bspline::ArcLengthTable& table,
+                                     const std::vector<double>& knots);
+
+/// Index of the de Boor point the curve passes through at a knot of multiplicity >= degree
+/// (or a domain end) of a clamped cubic; throws std::invalid_argument elsewhere.
+int cornerControlIndex(const bspline::BSplineCurve& curve, double knot);
+
+}  // namespace pacemod
+}  // namespace vicc_glyphs

@@ -1,0 +1,65 @@
+#pragma once
+// PACEMOD periodic geometric modification of a whole icon (thesis 6.2.3-6.2.4.1): the entry
+// point for designs and the `vicc_glyph modify` command.
+//
+//   DiffusionCurveImage dci = loadDiffusionCurves("water.svg", 512);
+//   WaveSpec spec{Waveform::Sine, /*waves_per_mm=*/0.3, /*amplitude_mm=*/0.5};
+//   std::vector<CurveWaveReport> report = applyWaves(dci, selectCurves(dci, {}), spec, 50.0);
+//
+// Units: the image is `glyph_size_mm` millimetres wide, so one millimetre is
+// image.width / glyph_size_mm pixels. Each selected closed curve gets
+// round(waves_per_mm * arc length in mm) whole waves (0: left unchanged and reported so);
+// open curves are left unchanged and reported as skipped. Colour and blur points keep their
+// arc-length positions. Self-intersection prevention (skeleton half-space test against all
+// curves of the unmodified image) reduces single peaks where needed; the report says where.
+
+#include <string>
+#include <vector>
+
+#include "vicc_glyphs/dci/diffusion_curve.hpp"
+#include "vicc_glyphs/pacemod/nearest_curve_point.hpp"
+#include "vicc_glyphs/pacemod/wave_spec.hpp"
+
+namespace vicc_glyphs {
+namespace pacemod {
+
+struct WaveOptions {
+  bool prevent_self_intersection = true;
+  /// Free space epsilon kept to the skeleton, in mm (0.3 mm = Fig. 6.14's 3 px at 512 px for a
+  /// 50 mm glyph).
+  double skeleton_offset_mm = 0.3;
+  double field_grid_scale = 1.0;  ///< feature-transform grid pixels per image pixel
+  FeatureTransform feature_transform = FeatureTransform::Maurer;
+};
+
+/// A knot point whose translation the skeleton guard shortened.
+struct PeakReduction {
+  double arc_length_mm = 0.0;  ///< along the original contour from its start point
+  double allowed_mm = 0.0;     ///< the amplitude applied instead of the requested one
+};
+
+struct CurveWaveReport {
+  int curve = 0;  ///< index in the image
+  double arc_length_mm = 0.0;
+  double requested_waves = 0.0;  ///< waves_per_mm * arc length (before rounding)
+  int wave_count = 0;            ///< the whole number used (0: not modified)
+  int knot_points = 0;           ///< translated knot points (wave peaks and corners)
+  double requested_amplitude_mm = 0.0;
+  /// Distance of each translated knot point of the modified curve from the original contour
+  /// (measured on the result, not the requested value): minimum, mean and maximum.
+  double realised_amplitude_min_mm = 0.0;
+  double realised_amplitude_mean_mm = 0.0;
+  double realised_amplitude_max_mm = 0.0;
+  std::vector<PeakReduction> reductions;
+  std::string skipped;  ///< non-empty: why the curve was left unchanged
+};
+
+/// Modifies `image` in place. Throws std::invalid_argument for an invalid spec (message names
+/// waves_per_mm / amplitude_mm), glyph_size_mm not finite and > 0, a curve index out of range,
+/// or a frequency so high that a quarter period would be shorter than half a pixel.
+std::vector<CurveWaveReport> applyWaves(DiffusionCurveImage& image, const std::vector<int>& curves,
+                                        const WaveSpec& spec, double glyph_size_mm,
+                                        const WaveOptions& options = {});
+
+}  // namespace pacemod
+}  // namespace vicc_glyphs

@@ -1,0 +1,96 @@
+// Feature transforms: nearest feature pixel for every pixel of a grid.
+#include <opencv2/imgproc.hpp>
+
+#include "vicc_glyphs/pacemod/nearest_curve_point.hpp"
+
+namespace vicc_glyphs {
+namespace pacemod {
+namespace {
+
+// Maurer's "RemoveFT": with candidate features u, v (rows ordered) and w on lines through
+// the column at rows ru < rv < rw and horizontal offsets du, dv, dw, v can never be the nearest
+// on this column when the Voronoi boundaries of u|v and v|w cross before v's row range.
+bool removable(double du, double dv, double dw, double ru, double rv, double rw) {
+  const double a = rv - ru;
+  const double b = rw - rv;
+  const double c = a + b;
+  return c * dv * dv - b * du * du - a * dw * dw - a * b * c > 0.0;
+}
+
+}  // namespace
+
+std::vector<int> maurerFeatureTransform(const cv::Mat& mask) {
+  const int width = mask.cols;
+  const int height = mask.rows;
+  // Pass 1: nearest feature column within each row (two sweeps).
+  std::vector<int> row_feature(static_cast<std::size_t>(width) * height, -1);
+  for (int y = 0; y < height; ++y) {
+    const unsigned char* row = mask.ptr<unsigned char>(y);
+    int* out = &row_feature[static_cast<std::size_t>(y) * width];
+    int last = -1;
+    for (int x = 0; x < width; ++x) {
+      if (row[x]) last = x;
+      out[x] = last;
+    }
+    last = -1;
+    for (int x = width - 1; x >= 0; --x) {
+      if (row[x]) last = x;
+      if (last >= 0 && (out[x] < 0 || last - x < x - out[x])) out[x] = last;
+    }
+  }
+  // Pass 2: per column, the lower envelope of the row candidates (partial Voronoi diagram).
+  std::vector<int> result(row_feature.size(), -1);
+  std::vector<int> stack_row(height), stack_col(height);
+  for (int x = 0; x < width; ++x) {
+    int top = 0;
+    for (int y = 0; y < height; ++y) {
+      const int fx = row_feature[static_cast<std::size_t>(y) * width + x];
+      if (fx < 0) continue;
+      const double dw = fx - x;
+      while (top >= 2 && removable(stack_col[top - 2] - x, stack_col[top - 1] - x, dw,
+                                   stack_row[top - 2], stack_row[top - 1], y)) {
+        --top;
+      }
+      stack_row[top] = y;
+      stack_col[top] = fx;
+      ++top;
+    }
+    if (top == 0) continue;
+    int k = 0;
+    for (int y = 0; y < height; ++y) {
+      auto distance2 = [&](int i) {
+        const double dx = stack_col[i] - x, dy = stack_row[i] - y;
+        return dx * dx + dy * dy;
+      };
+      while (k + 1 < top && distance2(k + 1) <= distance2(k)) ++k;
+      result[static_cast<std::size_t>(y) * width + x] = stack_row[k] * width + stack_col[k];
+    }
+  }
+  return result;
+}
+
+std::vector<int> openCvFeatureTransform(const cv::Mat& mask) {
+  cv::Mat source(mask.size(), CV_8U);
+  source.setTo(255);
+  source.setTo(0, mask);
+  cv::Mat distances, labels;
+  cv::distanceTransform(source, distances, labels, cv::DIST_L2, cv::DIST_MASK_5,
+                        cv::DIST_LABEL_PIXEL);
+  // Every feature pixel has its own label; map labels back to the pixels that carry them.
+  std::vector<int> label_pixel(static_cast<std::size_t>(mask.total()) + 1, -1);
+  for (int y = 0; y < mask.rows; ++y) {
+    for (int x = 0; x < mask.cols; ++x) {
+      if (mask.at<unsigned char>(y, x)) label_pixel[labels.at<int>(y, x)] = y * mask.cols + x;
+    }
+  }
+  std::vector<int> result(mask.total(), -1);
+  for (int y = 0; y < mask.rows; ++y) {
+    for (int x = 0; x < mask.cols; ++x) {
+      result[static_cast<std::size_t>(y) * mask.cols + x] = label_pixel[labels.at<int>(y, x)];
+    }
+  }
+  return result;
+}
+
+}  // namespace pacemod
+}  // namespace vicc_glyphs

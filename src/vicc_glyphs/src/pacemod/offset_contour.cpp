@@ -1,0 +1,117 @@
+#include "vicc_glyphs/pacemod/offset_contour.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+#include "vicc_glyphs/bspline/bezier_conversion.hpp"
+#include "vicc_glyphs/bspline/fitting.hpp"
+#include "vicc_glyphs/bspline/fowler_bartels.hpp"
+
+namespace vicc_glyphs {
+namespace pacemod {
+namespace {
+
+constexpr int kMaxGrid = 2048;
+constexpr int kSubpixelBits = 8;
+
+struct Grid {
+  Point2 origin;  ///< image position of the grid's corner
+  double scale;   ///< grid pixels per image pixel
+  cv::Size size;
+};
+
+Grid gridAround(const Polyline& contour, double margin, double scale) {
+  Point2 low = contour.front(), high = contour.front();
+  for (const Point2& p : contour) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  low -= Point2::Constant(margin);
+  high += Point2::Constant(margin);
+  const double extent = std::max(high.x() - low.x(), high.y() - low.y());
+  scale = std::min(scale, kMaxGrid / std::max(extent, 1e-9));
+  return {low, scale,
+          cv::Size(static_cast<int>(std::ceil((high.x() - low.x()) * scale)) + 1,
+                   static_cast<int>(std::ceil((high.y() - low.y()) * scale)) + 1)};
+}
+
+// Signed distance in grid pixels: negative inside the contour's region, positive outside;
+// each side's transform measures to the nearest pixel centre of the other side, so half a
+// pixel is taken off to put the zero level on the boundary between them.
+cv::Mat signedDistance(const Polyline& contour, const Grid& grid) {
+  std::vector<cv::Point> polygon;
+  const double unit = 1 << kSubpixelBits;
+  for (const Point2& p : contour) {
+    const Point2 g = (p - grid.origin) * grid.scale - Point2::Constant(0.5);
+    polygon.emplace_back(static_cast<int>(std::lround(g.x() * unit)),
+                         static_cast<int>(std::lround(g.y() * unit)));
+  }
+  cv::Mat inside = cv::Mat::zeros(grid.size, CV_8U);
+  cv::fillPoly(inside, std::vector<std::vector<cv::Point>>{polygon}, 255, cv::LINE_8,
+               kSubpixelBits);
+  cv::Mat to_outside, to_inside;
+  cv::distanceTransform(inside, to_outside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  cv::distanceTransform(255 - inside, to_inside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  cv::Mat field = to_inside - to_outside;
+  cv::subtract(field, 0.5, field, inside == 0);
+  cv::add(field, 0.5, field, inside);
+  return field;
+}
+
+}  // namespace
+
+double polylineArea(const Polyline& line) {
+  double area = 0.0;
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+    area += line[i].x() * line[i + 1].y() - line[i + 1].x() * line[i].y();
+  }
+  if (!line.empty())
+    area += line.back().x() * line.front().y() - line.front().x() * line.back().y();
+  return 0.5 * area;
+}
+
+Polyline offsetIsoline(const Polyline& contour, double offset, double grid_scale) {
+  if (contour.size() < 4 || !std::isfinite(offset)) return {};
+  const Grid grid = gridAround(contour, std::max(offset, 0.0) + 3.0, grid_scale);
+  const cv::Mat field = signedDistance(contour, grid);
+  const cv::Mat region = field < offset * grid.scale;
+  std::vector<std::vector<cv::Point>> traced;
+  cv::findContours(region, traced, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
+  const auto largest =
+      std::max_element(traced.begin(), traced.end(), [](const auto& a, const auto& b) {
+        return std::abs(cv::contourArea(a)) < std::abs(cv::contourArea(b));
+      });
+  if (largest == traced.end() || largest->size() < 8) return {};
+  Polyline result;
+  for (const cv::Point& p : *largest) {
+    result.push_back(grid.origin + (Point2(p.x, p.y) + Point2::Constant(0.5)) / grid.scale);
+  }
+  result.push_back(result.front());
+  if ((polylineArea(result) > 0.0) != (polylineArea(contour) > 0.0)) {
+    std::reverse(result.begin(), result.end());
+  }
+  return result;
+}
+
+std::vector<Point2> closedBezierFit(const Polyline& line, double knot_spacing) {
+  if (line.size() < 5) throw std::invalid_argument("closedBezierFit: need at least 4 points");
+  double length = 0.0;
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) length += (line[i + 1] - line[i]).norm();
+  const int spans = std::clamp(static_cast<int>(std::lround(length / knot_spacing)), 4,
+                               static_cast<int>(line.size()) / 2);
+  const std::vector<double> parameters = bspline::chordLengthParameters(line, 0.0, 1.0);
+  const std::vector<double> knots =
+      bspline::BSplineCurve::clampedUniformKnots(3, spans + 3, 0.0, 1.0);
+  bspline::BSplineCurve fit = bspline::leastSquaresFit(3, knots, line, parameters);
+  // Close it exactly with equal end tangents (the fit leaves both ends free).
+  const Point2 start = 0.5 * (fit.pointAt(0.0) + fit.pointAt(1.0));
+  const Point2 tangent = 0.5 * (fit.derivativeAt(0.0) + fit.derivativeAt(1.0));
+  fit = bspline::fowlerBartelsModify(
+      fit, {{0.0, start, 0}, {1.0, start, 0}, {0.0, tangent, 1}, {1.0, tangent, 1}});
+  return bspline::bsplineToBezierChain(fit).control_points;
+}
+
+}  // namespace pacemod
+}  // namespace vicc_glyphs

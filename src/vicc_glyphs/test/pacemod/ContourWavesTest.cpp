@@ -1,0 +1,133 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "vicc_glyphs/bspline/bezier_conversion.hpp"
+#include "vicc_glyphs/pacemod/contour_waves.hpp"
+
+namespace vicc_glyphs {
+namespace pacemod {
+namespace {
+
+using bspline::BSplineCurve;
+
+const Point2 kCentre(100, 100);
+constexpr double kRadius = 50.0;
+
+// A circle as 4 cubic Beziers, clockwise on screen (y down).
+BSplineCurve circle() {
+  const double c = 0.5522847498 * kRadius;
+  const Point2 o = kCentre;
+  const double r = kRadius;
+  std::vector<Point2> p{o + Point2(r, 0),  o + Point2(r, c),   o + Point2(c, r),
+                        o + Point2(0, r),  o + Point2(-c, r),  o + Point2(-r, c),
+                        o + Point2(-r, 0), o + Point2(-r, -c), o + Point2(-c, -r),
+                        o + Point2(0, -r), o + Point2(c, -r),  o + Point2(r, -c),
+                        o + Point2(r, 0)};
+  return bspline::bezierChainToBSpline(p).curve;
+}
+
+double radialOffset(const BSplineCurve& curve, double u) {
+  return (curve.pointAt(u) - kCentre).norm() - kRadius;
+}
+
+// Sign changes of the radial offset along the whole contour, ignoring |offset| < threshold.
+int signChanges(const BSplineCurve& curve, double threshold) {
+  int changes = 0, last = 0;
+  for (int i = 0; i <= 4000; ++i) {
+    const double d = radialOffset(curve, curve.domainEnd() * i / 4000.0);
+    const int sign = d > threshold ? 1 : (d < -threshold ? -1 : 0);
+    if (sign != 0 && last != 0 && sign != last) ++changes;
+    if (sign != 0) last = sign;
+  }
+  return changes;
+}
+
+ContourWave waves(Waveform waveform, int count, double amplitude) {
+  const BSplineCurve original = circle();
+  const bspline::ArcLengthTable table(original, 256);
+  return modifyContour(original, table, waveform, count, amplitude, nullptr);
+}
+
+class EveryWaveform : public ::testing::TestWithParam<Waveform> {};
+
+TEST_P(EveryWaveform, TranslatedKnotPointsSitAtTheAmplitudeAndTheCountIsWhole) {
+  const ContourWave wave = waves(GetParam(), 12, 3.0);
+  EXPECT_NEAR(wave.layout.length, 2 * M_PI * kRadius, 0.05);
+  EXPECT_TRUE(wave.curve.isClosed(1e-6));
+  for (const WavePeak& peak : wave.layout.peaks) {
+    EXPECT_NEAR(radialOffset(wave.curve, peak.arc_length), 3.0 * peak.sign, 0.05)
+        << peak.arc_length;
+  }
+  // 12 waves: 24 changes of side between the outward and inward lobes.
+  EXPECT_EQ(signChanges(wave.curve, 1.0), 24);
+  // The knot vector is the layout's: positions along the arc length and multiplicities.
+  EXPECT_EQ(wave.curve.knots(), knotVector(wave.layout));
+}
+
+INSTANTIATE_TEST_SUITE_P(PacemodWaves, EveryWaveform,
+                         ::testing::Values(Waveform::Sine, Waveform::Triangle, Waveform::Sawtooth,
+                                           Waveform::Rectangle));
+
+TEST(ContourWavesTest, SineIsSmoothWithItsExtremaAtThePeaks) {
+  const ContourWave wave = waves(Waveform::Sine, 10, 2.0);
+  double largest = 0.0;
+  for (int i = 0; i <= 4000; ++i) {
+    largest =
+        std::max(largest, std::abs(radialOffset(wave.curve, wave.curve.domainEnd() * i / 4000.0)));
+  }
+  EXPECT_NEAR(largest, 2.0, 0.1);
+  for (double knot : wave.curve.breakpoints()) {
+    if (knot > 0 && knot < wave.curve.domainEnd()) {
+      EXPECT_EQ(wave.curve.multiplicity(knot), 1);
+    }
+  }
+  // Smooth seam: equal first derivatives at both ends.
+  EXPECT_LT((wave.curve.derivativeAt(0.0) - wave.curve.derivativeAt(wave.curve.domainEnd())).norm(),
+            1e-6);
+}
+
+TEST(ContourWavesTest, SharpWaveformsHaveEveryThirdControlPointInACornerAndStraightStrips) {
+  for (Waveform waveform : {Waveform::Triangle, Waveform::Sawtooth}) {
+    const ContourWave wave = waves(waveform, 8, 3.0);
+    const std::vector<Point2>& points = wave.curve.controlPoints();
+    ASSERT_EQ(points.size(), 3 * (wave.layout.peaks.size() - 1) + 1);
+    for (std::size_t j = 0; j < wave.layout.peaks.size(); ++j) {
+      EXPECT_EQ(cornerControlIndex(wave.curve, wave.layout.peaks[j].arc_length), int(3 * j));
+      if (j + 1 == wave.layout.peaks.size()) break;
+      const Point2 a = points[3 * j], b = points[3 * j + 3];
+      EXPECT_LT((points[3 * j + 1] - (a + (b - a) / 3.0)).norm(), 1e-9);
+      EXPECT_LT((points[3 * j + 2] - (a + 2.0 * (b - a) / 3.0)).norm(), 1e-9);
+    }
+  }
+}
+
+TEST(ContourWavesTest, RectangleFlanksAreStraightAndPlateausFollowTheOffsetContour) {
+  const ContourWave wave = waves(Waveform::Rectangle, 6, 3.0);
+  const std::vector<Point2>& points = wave.curve.controlPoints();
+  for (const ArcInterval& flank : wave.layout.straight_spans) {
+    const int first = cornerControlIndex(wave.curve, flank.begin);
+    EXPECT_EQ(cornerControlIndex(wave.curve, flank.end), first + 3);
+    const Point2 a = points[first], b = points[first + 3];
+    EXPECT_LT((points[first + 1] - (a + (b - a) / 3.0)).norm(), 1e-9);
+  }
+  // Inside a plateau (between its corners) the offset stays near the amplitude.
+  const double half = wave.layout.length / 12.0;
+  for (int j = 1; j < 12; ++j) {
+    for (double f : {-0.3, 0.0, 0.3}) {
+      const double offset = radialOffset(wave.curve, j * half + f * half);
+      EXPECT_NEAR(std::abs(offset), 3.0, 0.3) << j << " " << f;
+    }
+  }
+}
+
+TEST(ContourWavesTest, OpenCurvesAreRejected) {
+  const BSplineCurve open(3, BSplineCurve::clampedUniformKnots(3, 4, 0, 1),
+                          {{0, 0}, {10, 0}, {20, 5}, {30, 0}});
+  const bspline::ArcLengthTable table(open);
+  EXPECT_THROW(modifyContour(open, table, Waveform::Sine, 2, 1.0, nullptr), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace pacemod
+}  // namespace vicc_glyphs

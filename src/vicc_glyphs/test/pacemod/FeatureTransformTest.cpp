@@ -1,0 +1,74 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <opencv2/core.hpp>
+#include <random>
+
+#include "vicc_glyphs/pacemod/nearest_curve_point.hpp"
+
+namespace vicc_glyphs {
+namespace pacemod {
+namespace {
+
+cv::Mat randomMask(int width, int height, int features, unsigned seed) {
+  std::mt19937 random(seed);
+  cv::Mat mask = cv::Mat::zeros(height, width, CV_8U);
+  for (int i = 0; i < features; ++i) {
+    mask.at<unsigned char>(random() % height, random() % width) = 1;
+  }
+  return mask;
+}
+
+double bruteForceDistance(const cv::Mat& mask, int x, int y) {
+  double best = 1e300;
+  for (int v = 0; v < mask.rows; ++v) {
+    for (int u = 0; u < mask.cols; ++u) {
+      if (mask.at<unsigned char>(v, u)) best = std::min(best, std::hypot(u - x, v - y));
+    }
+  }
+  return best;
+}
+
+double featureDistance(const std::vector<int>& features, const cv::Mat& mask, int x, int y) {
+  const int f = features[y * mask.cols + x];
+  EXPECT_GE(f, 0);
+  EXPECT_TRUE(mask.at<unsigned char>(f / mask.cols, f % mask.cols));
+  return std::hypot(f % mask.cols - x, f / mask.cols - y);
+}
+
+TEST(FeatureTransformTest, MaurerIsExactAndOpenCvLabelsAreWithinAPixel) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const cv::Mat mask = randomMask(47, 31, 12, seed);
+    const std::vector<int> maurer = maurerFeatureTransform(mask);
+    const std::vector<int> opencv = openCvFeatureTransform(mask);
+    for (int y = 0; y < mask.rows; ++y) {
+      for (int x = 0; x < mask.cols; ++x) {
+        const double exact = bruteForceDistance(mask, x, y);
+        EXPECT_NEAR(featureDistance(maurer, mask, x, y), exact, 1e-9) << x << "," << y;
+        EXPECT_LT(featureDistance(opencv, mask, x, y), exact + 1.0) << x << "," << y;
+      }
+    }
+  }
+}
+
+TEST(FeatureTransformTest, EmptyMaskHasNoFeatures) {
+  const std::vector<int> maurer = maurerFeatureTransform(cv::Mat::zeros(5, 4, CV_8U));
+  for (int f : maurer) EXPECT_EQ(f, -1);
+}
+
+TEST(FeatureTransformTest, NearestCurvePointReturnsExactSamplesOfTheCurves) {
+  const std::vector<std::vector<Point2>> lines{{{10, 10}, {90, 10}}, {{10, 30}, {90, 30}}};
+  for (FeatureTransform method : {FeatureTransform::Maurer, FeatureTransform::OpenCvLabels}) {
+    const NearestCurvePoint field(lines, 100, 40, 2.0, method);
+    const Point2 a = field.nearest({50.2, 14.0});
+    EXPECT_NEAR(a.y(), 10.0, 1e-12);
+    EXPECT_NEAR(a.x(), 50.2, 0.5);
+    EXPECT_NEAR(field.nearest({50.0, 27.0}).y(), 30.0, 1e-12);
+    EXPECT_NEAR(field.nearest({1e9, -1e9}).y(), 10.0, 1e-12);  // clamped onto the grid
+  }
+  EXPECT_THROW(NearestCurvePoint({}, 10, 10), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace pacemod
+}  // namespace vicc_glyphs
