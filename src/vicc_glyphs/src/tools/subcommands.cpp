@@ -1,3 +1,4 @@
+#include "design_command.hpp"
 #include "fit_command.hpp"
 #include "levels_command.hpp"
 #include "modify_command.hpp"
@@ -10,8 +11,10 @@ const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table{
       {"render", "render a DCI, SVG icon or PNG to a PNG image", &runRenderCommand},
       {"levels", "level-to-stimulus table of the perception model", &runLevelsCommand},
+      {"design", "render a glyph design (YAML) for data values", &runDesignCommand},
       {"fit-model", "fit the perception model to survey answers (CSV)", &runFitCommand},
-      {"modify", "PACEMOD waves, dashes, inflate on an icon; PNG + DCI + report", &runModifyCommand},
+      {"modify", "PACEMOD waves, dashes, inflate on an icon; PNG + DCI + report",
+       &runModifyCommand},
   };
   return table;
 }

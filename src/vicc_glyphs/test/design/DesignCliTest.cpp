@@ -1,0 +1,59 @@
+// "vicc_glyph design" (contract command line) run like a user.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "../support/tool_run.hpp"
+
+namespace {
+
+class DesignCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = vicc_glyphs::test::freshTestDirectory(
+        "vicc_glyph_design_", ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  vicc_glyphs::test::ToolRun run(const std::string& args) const {
+    return vicc_glyphs::test::runTool(args, dir_);
+  }
+  static std::string design(const std::string& name) {
+    return std::string(VICC_GLYPHS_DESIGNS_DIR) + "/" + name + ".yaml";
+  }
+  std::filesystem::path dir_;
+};
+
+}  // namespace
+
+TEST_F(DesignCliTest, WritesPngAndDciAtTheRequestedSize) {
+  const auto png = dir_ / "rain.png", xml = dir_ / "rain.xml";
+  const auto result =
+      run("design " + design("rain_forecast_sine") + " --values probability=65,amount=3 --out " +
+          png.string() + " --dci " + xml.string() + " --size 96");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const cv::Mat image = cv::imread(png.string());
+  EXPECT_EQ(image.cols, 96);
+  EXPECT_TRUE(std::filesystem::file_size(xml) > 100);
+}
+
+TEST_F(DesignCliTest, BadValuesExitTwoNamingTheParameter) {
+  const std::string out = " --out " + (dir_ / "x.png").string();
+  const auto outside =
+      run("design " + design("rain_forecast_sine") + " --values probability=120,amount=3" + out);
+  EXPECT_EQ(outside.exit_code, 2);
+  EXPECT_NE(outside.err.find("probability = 120 is outside its domain"), std::string::npos)
+      << outside.err;
+  const auto nan =
+      run("design " + design("rain_forecast_sine") + " --values probability=nan,amount=3" + out);
+  EXPECT_EQ(nan.exit_code, 2);
+  EXPECT_NE(nan.err.find("probability is NaN"), std::string::npos) << nan.err;
+  const auto missing =
+      run("design " + design("rain_forecast_sine") + " --values probability=50" + out);
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("amount"), std::string::npos);
+  const auto usage = run("design " + design("rain_forecast_sine") + out);
+  EXPECT_EQ(usage.exit_code, 2);
+  const auto no_file = run("design /nonexistent.yaml --values a=1" + out);
+  EXPECT_EQ(no_file.exit_code, 1);
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "x.png"));
+}
