@@ -10,6 +10,7 @@ add_library(vicc_glyphs_design
   src/design/design_yaml.cpp
   src/design/glyph_design.cpp
   src/design/design_values.cpp
+  src/design/gradient_channels.cpp
   src/design/design_builder.cpp
 )
 target_compile_options(vicc_glyphs_design PRIVATE ${VICC_WARNINGS})
@@ -22,7 +23,7 @@ install(TARGETS vicc_glyphs_design
 install(DIRECTORY designs DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 
 if(TARGET vicc_glyph)
-  target_sources(vicc_glyph PRIVATE src/tools/design_command.cpp)
+  target_sources(vicc_glyph PRIVATE src/tools/design_command.cpp src/tools/design_map_command.cpp)
   target_link_libraries(vicc_glyph vicc_glyphs_design)
 endif()
 

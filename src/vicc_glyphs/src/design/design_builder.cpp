@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <set>
 
+#include "gradient_channels.hpp"
 #include "vicc_glyphs/io/format_error.hpp"
 #include "vicc_glyphs/io/orzan_xml.hpp"
 #include "vicc_glyphs/io/svg_import.hpp"
@@ -45,10 +46,14 @@ void scaleAboutCentre(DiffusionCurveImage& image, const std::vector<int>& curves
   }
 }
 
+int modelLevel(const Active& active) {
+  return active.encoding->model_levels[static_cast<size_t>(active.level)];
+}
+
 double stimulusOf(const Active& active, VisualVariable variable, const GlyphDesign& design,
                   const perception::PerceptionModel& model) {
-  const int model_level = active.encoding->model_levels[static_cast<size_t>(active.level)];
-  return model.stimulus(variable, model_level, design.size_mm, active.encoding->waveform).stimulus;
+  return model.stimulus(variable, modelLevel(active), design.size_mm, active.encoding->waveform)
+      .stimulus;
 }
 
 pacemod::Waveform pacemodWaveform(perception::Waveform waveform) {
@@ -68,13 +73,18 @@ void applyWaveEncodings(DiffusionCurveImage& image, const std::vector<Active>& a
     }
     const std::vector<int> curves = pacemod::selectCurves(image, active[i].encoding->curves);
     pacemod::WaveSpec spec;
+    bool unmodified = false;  // a model level of -1 on either parameter: no wave
     spec.waveform = pacemodWaveform(active[i].encoding->waveform);
     spec.amplitude_mm = active[i].encoding->amplitude_mm;
     spec.waves_per_mm = active[i].encoding->waves_per_10mm / 10.0;
     for (size_t j = i; j < active.size(); ++j) {
       const Channel other = active[j].encoding->channel;
       if (pacemod::selectCurves(image, active[j].encoding->curves) != curves) continue;
-      if (other == Channel::GeometricFrequency) {
+      if ((other == Channel::GeometricFrequency || other == Channel::GeometricAmplitude) &&
+          modelLevel(active[j]) < 0) {
+        unmodified = true;
+        used.insert(j);
+      } else if (other == Channel::GeometricFrequency) {
         spec.waves_per_mm =
             1.0 / stimulusOf(active[j], VisualVariable::GeometricFrequency, design, model);
         used.insert(j);
@@ -84,13 +94,14 @@ void applyWaveEncodings(DiffusionCurveImage& image, const std::vector<Active>& a
         used.insert(j);
       }
     }
-    pacemod::applyWaves(image, curves, spec, design.size_mm);
+    if (!unmodified) pacemod::applyWaves(image, curves, spec, design.size_mm);
   }
 }
 
 void applyDashEncoding(DiffusionCurveImage& image, const Active& active,
                        const std::vector<int>& curves, const GlyphDesign& design,
                        const perception::PerceptionModel& model) {
+  if (modelLevel(active) < 0) return;
   const double period_mm = stimulusOf(active, VisualVariable::ColourFrequency, design, model);
   for (int index : curves) {
     const pacemod::ChainArcLength arc(image.curves[static_cast<size_t>(index)]);
@@ -108,6 +119,25 @@ std::vector<int> without(const std::vector<int>& curves, const std::set<int>& hi
     if (!hidden.count(c)) kept.push_back(c);
   }
   return kept;
+}
+
+// Band and centre region of the gradient glyph, on the (possibly waved) contours.
+void applyGradientEncodings(DiffusionCurveImage& image, const std::vector<Active>& active,
+                            const std::set<int>& hidden, const GlyphDesign& design) {
+  for (const Active& a : active) {
+    const Encoding& e = *a.encoding;
+    if (e.channel != Channel::Band && e.channel != Channel::CentreDashes) continue;
+    const size_t level = static_cast<size_t>(a.level);
+    for (int index : without(pacemod::selectCurves(image, e.curves), hidden)) {
+      if (e.channel == Channel::Band) {
+        addContourBand(image, index, e.band_mm, e.value_factors[level], e.saturation_factors[level],
+                       design.size_mm);
+      } else {
+        addDashedCentre(image, index, e.inset_mm, e.dash_counts[level], e.colors[level],
+                        design.size_mm);
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -167,6 +197,7 @@ DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>
     if (offset != 0.0) pacemod::inflateCurves(image, curves, offset, design.size_mm);
   }
   applyWaveEncodings(image, active, design, model);
+  applyGradientEncodings(image, active, hidden, design);
   for (const Active& a : active) {
     if (a.encoding->channel != Channel::ColourFrequency) continue;
     applyDashEncoding(image, a, without(pacemod::selectCurves(image, a.encoding->curves), hidden),

@@ -22,6 +22,8 @@ const std::map<std::string, Channel>& channelNames() {
       {"fill_color", Channel::FillColor},
       {"glyph_scale", Channel::GlyphScale},
       {"hide", Channel::Hide},
+      {"band", Channel::Band},
+      {"centre_dashes", Channel::CentreDashes},
   };
   return names;
 }
@@ -51,7 +53,7 @@ void readModelLevels(const YamlMap& map, Encoding& encoding, VisualVariable vari
     throw DesignError(map.key("levels") + ": " + e.what());
   }
   for (int level : encoding.model_levels) {
-    if (level < 0 || level >= available) {
+    if (level < -1 || level >= available) {
       throw DesignError(map.key("levels") + ": level " + std::to_string(level) + " of " +
                         perception::toString(variable) + " does not exist at " +
                         std::to_string(size_mm) + " mm (" + std::to_string(available) + " levels)");
@@ -73,11 +75,38 @@ void readHidden(const YamlMap& map, Encoding& encoding, int levels) {
   }
 }
 
+void readBand(const YamlMap& map, Encoding& encoding, int levels) {
+  encoding.band_mm = map.number("band_mm");
+  if (!(encoding.band_mm > 0.0)) throw DesignError(map.key("band_mm") + " must be > 0");
+  encoding.value_factors = map.numbers("value_factors");
+  encoding.saturation_factors = map.numbers("saturation_factors");
+  requireCount(encoding.value_factors.size(), levels, map.key("value_factors"));
+  requireCount(encoding.saturation_factors.size(), levels, map.key("saturation_factors"));
+  for (size_t i = 0; i < encoding.value_factors.size(); ++i) {
+    if (!(encoding.value_factors[i] > 0.0) || !(encoding.saturation_factors[i] >= 0.0)) {
+      throw DesignError(map.key("value_factors") + " must be > 0, saturation_factors >= 0");
+    }
+  }
+}
+
+void readCentreDashes(const YamlMap& map, Encoding& encoding, int levels) {
+  encoding.inset_mm = map.number("inset_mm");
+  if (!(encoding.inset_mm > 0.0)) throw DesignError(map.key("inset_mm") + " must be > 0");
+  encoding.dash_counts = map.integers("dash_counts");
+  requireCount(encoding.dash_counts.size(), levels, map.key("dash_counts"));
+  for (int count : encoding.dash_counts) {
+    if (count < 0) throw DesignError(map.key("dash_counts") + " must be >= 0");
+  }
+  encoding.colors = map.colors("colors");
+  requireCount(encoding.colors.size(), levels, map.key("colors"));
+}
+
 Encoding readEncoding(const YAML::Node& node, const std::string& path, int levels, double size_mm,
                       const PerceptionModel& model) {
   const YamlMap map(node, path,
                     {"channel", "curves", "levels", "waveform", "amplitude_mm", "waves_per_10mm",
-                     "dash_color", "offsets_mm", "factors", "colors", "replace", "hidden"});
+                     "dash_color", "offsets_mm", "factors", "colors", "replace", "hidden",
+                     "band_mm", "value_factors", "saturation_factors", "inset_mm", "dash_counts"});
   Encoding encoding;
   const std::string channel = map.text("channel");
   const auto found = channelNames().find(channel);
@@ -123,10 +152,33 @@ Encoding readEncoding(const YAML::Node& node, const std::string& path, int level
     case Channel::Hide:
       readHidden(map, encoding, levels);
       break;
+    case Channel::Band:
+      readBand(map, encoding, levels);
+      break;
+    case Channel::CentreDashes:
+      readCentreDashes(map, encoding, levels);
+      break;
     default:
       break;
   }
   return encoding;
+}
+
+// edges_belong_below: one bool for all edges or a list with one per edge (default false).
+std::vector<bool> readEdgeSides(const YamlMap& map, size_t edges) {
+  if (!map.has("edges_belong_below")) return std::vector<bool>(edges, false);
+  const YAML::Node node = map.node("edges_belong_below");
+  const std::string key = map.key("edges_belong_below");
+  try {
+    if (node.IsScalar()) return std::vector<bool>(edges, node.as<bool>());
+    if (node.IsSequence() && node.size() == edges) {
+      std::vector<bool> sides;
+      for (size_t i = 0; i < edges; ++i) sides.push_back(node[i].as<bool>());
+      return sides;
+    }
+  } catch (const YAML::Exception&) {
+  }
+  throw DesignError(key + " must be true/false or a list of one per edge");
 }
 
 DesignVariable readVariable(const YAML::Node& node, const std::string& path, double size_mm,
@@ -148,9 +200,7 @@ DesignVariable readVariable(const YAML::Node& node, const std::string& path, dou
       throw DesignError(map.key("edges") + " must increase strictly inside the domain");
     }
   }
-  if (map.has("edges_belong_below")) {
-    variable.upper_edge_inclusive = map.node("edges_belong_below").as<bool>();
-  }
+  variable.edge_belongs_below = readEdgeSides(map, variable.edges.size());
   const YAML::Node encodings = map.node("encodings");
   if (!encodings.IsSequence() || encodings.size() == 0) {
     throw DesignError(map.key("encodings") + " must be a non-empty list");
@@ -196,8 +246,9 @@ GlyphDesign readDesign(const YAML::Node& root, const std::string& base_dir,
 
 int levelOf(const DesignVariable& variable, double value) {
   int level = 0;
-  for (double edge : variable.edges) {
-    if (variable.upper_edge_inclusive ? value > edge : value >= edge) ++level;
+  for (size_t i = 0; i < variable.edges.size(); ++i) {
+    const double edge = variable.edges[i];
+    if (variable.edge_belongs_below[i] ? value > edge : value >= edge) ++level;
   }
   return level;
 }

@@ -1,4 +1,5 @@
 #include "design_command.hpp"
+#include "design_map_command.hpp"
 #include "fit_command.hpp"
 #include "levels_command.hpp"
 #include "modify_command.hpp"
@@ -12,6 +13,8 @@ const std::vector<Subcommand>& subcommands() {
       {"render", "render a DCI, SVG icon or PNG to a PNG image", &runRenderCommand},
       {"levels", "level-to-stimulus table of the perception model", &runLevelsCommand},
       {"design", "render a glyph design (YAML) for data values", &runDesignCommand},
+      {"design-map", "one glyph per table row, placed by lon/lat, on one PNG",
+       &runDesignMapCommand},
       {"fit-model", "fit the perception model to survey answers (CSV)", &runFitCommand},
       {"modify", "PACEMOD waves, dashes, inflate on an icon; PNG + DCI + report",
        &runModifyCommand},

@@ -21,12 +21,19 @@ GlyphDesign shipped(const std::string& name) {
 }
 
 // Shoelace area of a curve's control polygon (close enough to compare sizes).
-double polygonArea(const DiffusionCurve& curve) {
+double polygonSignedArea(const DiffusionCurve& curve) {
   double area = 0.0;
   const auto& p = curve.control_points;
-  for (size_t i = 0; i + 1 < p.size(); ++i)
+  for (size_t i = 0; i + 1 < p.size(); ++i) {
     area += p[i].x() * p[i + 1].y() - p[i + 1].x() * p[i].y();
-  return 0.5 * std::abs(area);
+  }
+  return 0.5 * area;
+}
+
+double polygonArea(const DiffusionCurve& curve) { return std::abs(polygonSignedArea(curve)); }
+
+bool enclosedSideIsLeftForTest(const DiffusionCurve& curve) {
+  return polygonSignedArea(curve) < 0.0;  // positive = clockwise on screen: inside on the right
 }
 
 bool sameGeometry(const DiffusionCurve& a, const DiffusionCurve& b) {
@@ -107,4 +114,49 @@ TEST(DesignBuild, RendersAtTheRequestedSize) {
   EXPECT_EQ(result.image.cols, 128);
   EXPECT_THROW(buildGlyph(design, {5, 1}, model()), DesignValueError);
   EXPECT_THROW(buildGlyph(design, {1}, model()), DesignValueError);
+}
+
+TEST(DesignBuild, Covid19GradientGlyphAddsBandAndDashedCentre) {
+  const GlyphDesign design = shipped("covid19_gradient");
+  const DiffusionCurveImage icon = loadIcon(design, 192);
+  ASSERT_EQ(icon.curves.size(), 1u);
+  const auto build = [&](double incidence, double change, double hosp_change) {
+    return buildGlyph(design,
+                      design.levelsFor({{"incidence", incidence},
+                                        {"hospitalisation", 3},
+                                        {"incidence_change", change},
+                                        {"hospitalisation_change", hosp_change}}),
+                      model(), 192);
+  };
+  // Steady: no band, no dashes; only the centre region curve is added.
+  const DiffusionCurveImage steady = build(2000, 0, 0);  // glyph scale 1
+  EXPECT_EQ(steady.curves.size(), 2u);
+  EXPECT_TRUE(sameGeometry(steady.curves[0], icon.curves[0]));
+  // Rising: waved contour + band curve + centre curve + its dash barrier.
+  const DiffusionCurveImage rising = build(400, 15, 30);
+  EXPECT_EQ(rising.curves.size(), 4u);
+  EXPECT_FALSE(sameGeometry(rising.curves[0], icon.curves[0]));
+  EXPECT_EQ(validate(rising), "");
+  // Size follows the incidence (Table 6.8): glyph scale 0.6 vs 1.0.
+  const DiffusionCurveImage small = build(10, 0, 0), large = build(2000, 0, 0);
+  EXPECT_NEAR(polygonArea(small.curves[0]) / polygonArea(large.curves[0]), 0.36, 0.01);
+}
+
+TEST(DesignBuild, BandIsDarkerForARiseAndBrighterForAFall) {
+  const GlyphDesign design = shipped("covid19_gradient");
+  const auto bandColor = [&](double change) {
+    const DiffusionCurveImage image = buildGlyph(design,
+                                                 design.levelsFor({{"incidence", 400},
+                                                                   {"hospitalisation", 3},
+                                                                   {"incidence_change", change},
+                                                                   {"hospitalisation_change", 0}}),
+                                                 model(), 192);
+    const DiffusionCurve& contour = image.curves[0];
+    const auto& inside =
+        enclosedSideIsLeftForTest(contour) ? contour.left_colors : contour.right_colors;
+    return inside.front().rgb;
+  };
+  const Color fill = Color(0x14, 0x81, 0xd6) / 255.0;  // hospitalisation 3 -> ]2, 3] level
+  EXPECT_LT(bandColor(15).maxCoeff(), 0.95 * fill.maxCoeff());
+  EXPECT_GT(bandColor(-15).maxCoeff(), 1.05 * fill.maxCoeff());
 }

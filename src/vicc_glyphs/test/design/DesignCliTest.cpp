@@ -1,6 +1,7 @@
 // "vicc_glyph design" (contract command line) run like a user.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 
 #include "../support/tool_run.hpp"
@@ -56,4 +57,33 @@ TEST_F(DesignCliTest, BadValuesExitTwoNamingTheParameter) {
   const auto no_file = run("design /nonexistent.yaml --values a=1" + out);
   EXPECT_EQ(no_file.exit_code, 1);
   EXPECT_FALSE(std::filesystem::exists(dir_ / "x.png"));
+}
+
+TEST_F(DesignCliTest, MapPlacesOneGlyphPerRow) {
+  const auto csv = dir_ / "rows.csv", png = dir_ / "map.png";
+  std::ofstream(csv) << "label,lon,lat,probability,amount\nA,8,50,95,1\nB,12,52,40,20\n";
+  const auto result = run("design-map " + design("rain_forecast_sine") + " --table " +
+                          csv.string() + " --out " + png.string() + " --glyph-size 128 --width 500");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("(2 glyphs)"), std::string::npos);
+  const cv::Mat map = cv::imread(png.string());
+  EXPECT_EQ(map.cols, 500);
+  // Glyph A sits at the left margin (x = 128), B at the right (x = 372): both draw there.
+  const auto darkest = [&](int x0) {
+    double low = 255;
+    for (int y = 0; y < map.rows; ++y) {
+      for (int x = x0 - 20; x < x0 + 20; ++x) {
+        const cv::Vec3b p = map.at<cv::Vec3b>(y, x);
+        low = std::min<double>(low, p[0] + p[1] + p[2]);
+      }
+    }
+    return low;
+  };
+  EXPECT_LT(darkest(128), 400);
+  EXPECT_LT(darkest(372), 400);
+  std::ofstream(csv) << "label,lon,lat,probability,amount\nA,8,50,95,1\nB,12,52,140,20\n";
+  const auto bad = run("design-map " + design("rain_forecast_sine") + " --table " + csv.string() +
+                       " --out " + png.string());
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.err.find("probability = 140 is outside its domain"), std::string::npos);
 }

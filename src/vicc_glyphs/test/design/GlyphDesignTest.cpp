@@ -113,8 +113,45 @@ TEST(GlyphDesign, ValuesMapToLevelsByTheEdges) {
   EXPECT_EQ(design.levelsFor({{"p", 49.9}}), std::vector<int>{0});
   EXPECT_EQ(design.levelsFor({{"p", 50.0}}), std::vector<int>{1});
   EXPECT_EQ(design.levelsFor({{"p", 100.0}}), std::vector<int>{1});
-  design.variables[0].upper_edge_inclusive = true;  // ]a, b] bins
+  design.variables[0].edge_belongs_below = {true};  // ]a, b] bins
   EXPECT_EQ(design.levelsFor({{"p", 50.0}}), std::vector<int>{0});
+}
+
+TEST(GlyphDesign, MixedBinsFollowTheTable) {
+  // Table 6.8: < 50, [50, 100[, [100, 250], ]250, 500], ]500, 1000], > 1000.
+  const GlyphDesign design =
+      loadDesign(std::string(VICC_GLYPHS_DESIGNS_DIR) + "/covid19_gradient.yaml", model());
+  const auto incidence = [&](double value) {
+    return design.levelsFor({{"incidence", value},
+                             {"hospitalisation", 1},
+                             {"incidence_change", 0},
+                             {"hospitalisation_change", 0}})[0];
+  };
+  EXPECT_EQ(incidence(49.9), 0);
+  EXPECT_EQ(incidence(50), 1);
+  EXPECT_EQ(incidence(100), 2);
+  EXPECT_EQ(incidence(250), 2);
+  EXPECT_EQ(incidence(250.1), 3);
+  EXPECT_EQ(incidence(1000), 4);
+  EXPECT_EQ(incidence(1000.1), 5);
+  const auto change = [&](double value) {
+    return design.levelsFor({{"incidence", 10},
+                             {"hospitalisation", 1},
+                             {"incidence_change", value},
+                             {"hospitalisation_change", 0}})[2];
+  };
+  // Table 6.10: < -9, [-9, -3[, [-3, 3], ]3, 9], > 9.
+  EXPECT_EQ(change(-9.1), 0);
+  EXPECT_EQ(change(-9), 1);
+  EXPECT_EQ(change(-3), 2);
+  EXPECT_EQ(change(3), 2);
+  EXPECT_EQ(change(3.1), 3);
+  EXPECT_EQ(change(9), 3);
+  EXPECT_EQ(change(9.1), 4);
+  EXPECT_NE(errorOf(replaced(kMinimal, "edges: [50]",
+                             "edges: [50]\n    edges_belong_below: [true, false]"))
+                .find("edges_belong_below must be true/false or a list of one per edge"),
+            std::string::npos);
 }
 
 TEST(GlyphDesign, BadValuesNameTheVariable) {

@@ -37,29 +37,37 @@ enum class Channel {
   FillColor,           ///< colours per data level, replacing the icon colour `replace`
   GlyphScale,          ///< scale about the image centre per data level
   Hide,                ///< per data level, the channel's curves that are hidden
+  Band,                ///< gradient glyph: contour band, value/saturation factors per level
+  CentreDashes,        ///< gradient glyph: dashed central region, dash count + colour per level
 };
 
 struct Encoding {
   Channel channel = Channel::Inflate;
   pacemod::CurveSelection curves;
-  /// Perception channels: the model level of each data level.
+  /// Perception channels: the model level of each data level (-1: no modification).
   std::vector<int> model_levels;
   perception::Waveform waveform = perception::Waveform::Sine;
-  double amplitude_mm = 0.5;             ///< GeometricFrequency: fixed amplitude
-  double waves_per_10mm = 3.0;           ///< GeometricAmplitude: fixed frequency
-  Color dash_color{1, 1, 1};             ///< ColourFrequency
-  std::vector<double> numbers;           ///< Inflate: offsets in mm; GlyphScale: factors
-  std::vector<Color> colors;             ///< FillColor
-  Color replace{0, 0, 0};                ///< FillColor: the icon colour that is replaced
-  std::vector<std::vector<int>> hidden;  ///< Hide: curve indices hidden per data level
+  double amplitude_mm = 0.5;               ///< GeometricFrequency: fixed amplitude
+  double waves_per_10mm = 3.0;             ///< GeometricAmplitude: fixed frequency
+  Color dash_color{1, 1, 1};               ///< ColourFrequency
+  std::vector<double> numbers;             ///< Inflate: offsets in mm; GlyphScale: factors
+  std::vector<Color> colors;               ///< FillColor
+  Color replace{0, 0, 0};                  ///< FillColor: the icon colour that is replaced
+  std::vector<std::vector<int>> hidden;    ///< Hide: curve indices hidden per data level
+  double band_mm = 1.0;                    ///< Band: width
+  std::vector<double> value_factors;       ///< Band: HSV value factor per data level
+  std::vector<double> saturation_factors;  ///< Band: HSV saturation factor per data level
+  double inset_mm = 2.0;                   ///< CentreDashes: the region's distance inside
+  std::vector<int> dash_counts;            ///< CentreDashes: per data level (0: none)
 };
 
 struct DesignVariable {
   std::string name;
   double lower = 0.0, upper = 1.0;  ///< domain (inclusive)
-  /// Increasing inner bin edges: level i holds [edge[i-1], edge[i]); edges.size() + 1 levels.
+  /// Increasing inner bin edges, edges.size() + 1 levels: a value equal to edge i goes to the
+  /// upper bin ([a, b[ bins) unless edge_belongs_below[i] (]a, b] bins).
   std::vector<double> edges;
-  bool upper_edge_inclusive = false;  ///< edges belong to the lower bin (]a, b] tables)
+  std::vector<bool> edge_belongs_below;  ///< one per edge
   std::vector<Encoding> encodings;
   int levelCount() const { return static_cast<int>(edges.size()) + 1; }
 };
