@@ -9,7 +9,9 @@ endif()
 find_library(VICC_GLYPHS_POTRACE potrace REQUIRED)
 find_path(VICC_GLYPHS_POTRACE_INCLUDE potracelib.h REQUIRED)
 
-add_library(vicc_glyphs_io
+# vicc_glyphs_formats: Orzan XML and SVG only (no GPL code), for the glyph server and designs.
+# vicc_glyphs_io adds raster import (potrace, GPL) and the loader that dispatches to all three.
+add_library(vicc_glyphs_formats
   src/io/text_file.cpp
   src/io/xml_attributes.cpp
   src/io/orzan_reader.cpp
@@ -27,6 +29,12 @@ add_library(vicc_glyphs_io
   src/io/side_colors.cpp
   src/io/svg_document.cpp
   src/io/svg_import.cpp
+)
+target_include_directories(vicc_glyphs_formats SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
+target_compile_options(vicc_glyphs_formats PRIVATE ${VICC_WARNINGS})
+target_link_libraries(vicc_glyphs_formats vicc_glyphs_dci ${VICC_GLYPHS_TINYXML2} ${OpenCV_LIBRARIES})
+
+add_library(vicc_glyphs_io
   src/io/color_quantization.cpp
   src/io/potrace_tracing.cpp
   src/io/raster_import.cpp
@@ -34,10 +42,9 @@ add_library(vicc_glyphs_io
 )
 target_include_directories(vicc_glyphs_io SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS} ${VICC_GLYPHS_POTRACE_INCLUDE})
 target_compile_options(vicc_glyphs_io PRIVATE ${VICC_WARNINGS})
-target_link_libraries(vicc_glyphs_io vicc_glyphs_dci ${VICC_GLYPHS_TINYXML2} ${VICC_GLYPHS_POTRACE}
-  ${OpenCV_LIBRARIES})
+target_link_libraries(vicc_glyphs_io vicc_glyphs_formats ${VICC_GLYPHS_POTRACE} ${OpenCV_LIBRARIES})
 
-install(TARGETS vicc_glyphs_io
+install(TARGETS vicc_glyphs_formats vicc_glyphs_io
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 install(DIRECTORY data/icons data/samples DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/data)

@@ -1,0 +1,72 @@
+#pragma once
+// The glyph server (ROS): renders glyph designs for data values.
+// - Service ~render (vicc_msgs/RenderGlyph): design + values -> rgb8 image (+ PNG bytes).
+// - Topics ~<design>/image (image_transport): every glyph rendered for that design is
+//   published there while someone subscribes (nothing is encoded otherwise); a new
+//   subscriber gets the latest one.
+// Parameters (read once; a bad one stops start-up with a message naming it):
+//   ~designs_dir (string): directory of design YAML files (default: the package's designs/)
+//   ~perception_model (string): model file (default: the package's config/perception_model.yaml)
+//   ~cache_size (int, 1..10000, default 64): rendered glyphs kept, keyed by design, data
+//   levels and size (values in the same bins share an entry)
+
+#include <image_transport/image_transport.h>
+#include <ros/ros.h>
+#include <vicc_msgs/RenderGlyph.h>
+
+#include <list>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "vicc_glyphs/design/glyph_design.hpp"
+#include "vicc_glyphs/perception/perception_model.hpp"
+#include "vicc_glyphs/render/renderer.hpp"
+
+namespace vicc_glyphs::ros_glyph {
+
+struct GlyphServerParameters {
+  std::string designs_dir;
+  std::string perception_model;
+  int cache_size = 64;
+};
+
+/// Reads the parameters; throws std::invalid_argument naming the bad one.
+GlyphServerParameters readGlyphServerParameters(const ros::NodeHandle& private_nh);
+
+class GlyphServer {
+ public:
+  /// Loads the model and every design; throws std::runtime_error naming the file on errors.
+  GlyphServer(ros::NodeHandle nh, ros::NodeHandle private_nh);
+
+  bool render(vicc_msgs::RenderGlyph::Request& request, vicc_msgs::RenderGlyph::Response& response);
+  size_t cacheEntries() const { return cache_order_.size(); }
+
+ private:
+  struct DesignEntry {
+    design::GlyphDesign design;
+    image_transport::Publisher publisher;
+    sensor_msgs::ImagePtr latest;
+  };
+  using CacheKey = std::pair<std::string, std::vector<int>>;  // design, levels + size
+
+  cv::Mat renderCached(const DesignEntry& entry, const std::vector<int>& levels, int size);
+  void onSubscribe(const std::string& design,
+                   const image_transport::SingleSubscriberPublisher& pub);
+
+  ros::NodeHandle private_nh_;
+  GlyphServerParameters parameters_;
+  perception::PerceptionModel model_;
+  std::map<std::string, DesignEntry> designs_;
+  image_transport::ImageTransport transport_;
+  ros::ServiceServer service_;
+  DiffusionCurveRenderer renderer_;  // one renderer, reused: it keeps its buffers
+  std::map<CacheKey, cv::Mat> cache_;
+  std::list<CacheKey> cache_order_;  // oldest first
+  std::mutex mutex_;
+};
+
+}  // namespace vicc_glyphs::ros_glyph

@@ -1,0 +1,216 @@
+#include "vicc_glyphs/design/design_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "gradient_channels.hpp"
+#include "vicc_glyphs/io/format_error.hpp"
+#include "vicc_glyphs/io/orzan_xml.hpp"
+#include "vicc_glyphs/io/svg_import.hpp"
+#include "vicc_glyphs/pacemod/dashes.hpp"
+#include "vicc_glyphs/pacemod/inflate.hpp"
+#include "vicc_glyphs/pacemod/periodic_waves.hpp"
+
+namespace vicc_glyphs::design {
+namespace {
+
+using perception::VisualVariable;
+
+// An encoding with the data level it is driven by.
+struct Active {
+  const Encoding* encoding;
+  int level;
+};
+
+// Colours that match the one a design replaces (8-bit colours / 255 from the importers).
+constexpr double kColorTolerance = 0.6 / 255.0;
+
+double pixelsPerMm(const DiffusionCurveImage& image, const GlyphDesign& design) {
+  return image.width / design.size_mm;
+}
+
+void replaceColor(std::vector<ColorPoint>& points, const Color& from, const Color& to) {
+  for (ColorPoint& point : points) {
+    if ((point.rgb - from).cwiseAbs().maxCoeff() <= kColorTolerance) point.rgb = to;
+  }
+}
+
+void scaleAboutCentre(DiffusionCurveImage& image, const std::vector<int>& curves, double factor) {
+  const Point2 centre(0.5 * image.width, 0.5 * image.height);
+  for (int index : curves) {
+    DiffusionCurve& curve = image.curves[static_cast<size_t>(index)];
+    for (Point2& p : curve.control_points) p = centre + factor * (p - centre);
+    for (BlurPoint& b : curve.blur_points) b.sigma *= factor;
+  }
+}
+
+int modelLevel(const Active& active) {
+  return active.encoding->model_levels[static_cast<size_t>(active.level)];
+}
+
+double stimulusOf(const Active& active, VisualVariable variable, const GlyphDesign& design,
+                  const perception::PerceptionModel& model) {
+  return model.stimulus(variable, modelLevel(active), design.size_mm, active.encoding->waveform)
+      .stimulus;
+}
+
+pacemod::Waveform pacemodWaveform(perception::Waveform waveform) {
+  return *pacemod::parseWaveform(perception::toString(waveform));
+}
+
+// Geometric frequency and amplitude on the same curves form one wave; alone, the other wave
+// parameter is the encoding's fixed value.
+void applyWaveEncodings(DiffusionCurveImage& image, const std::vector<Active>& active,
+                        const GlyphDesign& design, const perception::PerceptionModel& model) {
+  std::set<size_t> used;
+  for (size_t i = 0; i < active.size(); ++i) {
+    const Channel channel = active[i].encoding->channel;
+    if (used.count(i) ||
+        (channel != Channel::GeometricFrequency && channel != Channel::GeometricAmplitude)) {
+      continue;
+    }
+    const std::vector<int> curves = pacemod::selectCurves(image, active[i].encoding->curves);
+    pacemod::WaveSpec spec;
+    bool unmodified = false;  // a model level of -1 on either parameter: no wave
+    spec.waveform = pacemodWaveform(active[i].encoding->waveform);
+    spec.amplitude_mm = active[i].encoding->amplitude_mm;
+    spec.waves_per_mm = active[i].encoding->waves_per_10mm / 10.0;
+    for (size_t j = i; j < active.size(); ++j) {
+      const Channel other = active[j].encoding->channel;
+      if (pacemod::selectCurves(image, active[j].encoding->curves) != curves) continue;
+      if ((other == Channel::GeometricFrequency || other == Channel::GeometricAmplitude) &&
+          modelLevel(active[j]) < 0) {
+        unmodified = true;
+        used.insert(j);
+      } else if (other == Channel::GeometricFrequency) {
+        spec.waves_per_mm =
+            1.0 / stimulusOf(active[j], VisualVariable::GeometricFrequency, design, model);
+        used.insert(j);
+      } else if (other == Channel::GeometricAmplitude) {
+        spec.amplitude_mm =
+            stimulusOf(active[j], VisualVariable::GeometricAmplitude, design, model);
+        used.insert(j);
+      }
+    }
+    if (!unmodified) pacemod::applyWaves(image, curves, spec, design.size_mm);
+  }
+}
+
+void applyDashEncoding(DiffusionCurveImage& image, const Active& active,
+                       const std::vector<int>& curves, const GlyphDesign& design,
+                       const perception::PerceptionModel& model) {
+  if (modelLevel(active) < 0) return;
+  const double period_mm = stimulusOf(active, VisualVariable::ColourFrequency, design, model);
+  for (int index : curves) {
+    const pacemod::ChainArcLength arc(image.curves[static_cast<size_t>(index)]);
+    const double length_mm = arc.totalLength() / pixelsPerMm(image, design);
+    pacemod::DashSpec spec;
+    spec.color = active.encoding->dash_color;
+    spec.count = std::max(1, static_cast<int>(std::lround(length_mm / period_mm)));
+    pacemod::applyDashes(image, {index}, spec, design.size_mm);
+  }
+}
+
+std::vector<int> without(const std::vector<int>& curves, const std::set<int>& hidden) {
+  std::vector<int> kept;
+  for (int c : curves) {
+    if (!hidden.count(c)) kept.push_back(c);
+  }
+  return kept;
+}
+
+// Band and centre region of the gradient glyph, on the (possibly waved) contours.
+void applyGradientEncodings(DiffusionCurveImage& image, const std::vector<Active>& active,
+                            const std::set<int>& hidden, const GlyphDesign& design) {
+  for (const Active& a : active) {
+    const Encoding& e = *a.encoding;
+    if (e.channel != Channel::Band && e.channel != Channel::CentreDashes) continue;
+    const size_t level = static_cast<size_t>(a.level);
+    for (int index : without(pacemod::selectCurves(image, e.curves), hidden)) {
+      if (e.channel == Channel::Band) {
+        addContourBand(image, index, e.band_mm, e.value_factors[level], e.saturation_factors[level],
+                       design.size_mm);
+      } else {
+        addDashedCentre(image, index, e.inset_mm, e.dash_counts[level], e.colors[level],
+                        design.size_mm);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+DiffusionCurveImage loadIcon(const GlyphDesign& design, int size_px) {
+  const int size = size_px > 0 ? size_px : design.size_px;
+  std::string extension = std::filesystem::path(design.icon_path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
+  if (extension == ".svg") {
+    SvgImportOptions options;
+    options.background = design.background;
+    options.size = size;
+    return importSvg(design.icon_path, options);
+  }
+  if (extension == ".xml") return scaledToWidth(readOrzanXml(design.icon_path), size);
+  throw FormatError(design.icon_path + ": design icons must be .svg or .xml (no raster import)");
+}
+
+DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>& levels,
+                               const perception::PerceptionModel& model, int size_px) {
+  if (levels.size() != design.variables.size()) {
+    throw DesignValueError("design " + design.name + " needs " +
+                           std::to_string(design.variables.size()) + " levels");
+  }
+  std::vector<Active> active;
+  for (size_t v = 0; v < levels.size(); ++v) {
+    const DesignVariable& variable = design.variables[v];
+    if (levels[v] < 0 || levels[v] >= variable.levelCount()) {
+      throw DesignValueError(variable.name + ": level " + std::to_string(levels[v]) +
+                             " out of range");
+    }
+    for (const Encoding& encoding : variable.encodings) active.push_back({&encoding, levels[v]});
+  }
+  DiffusionCurveImage image = loadIcon(design, size_px);
+  const size_t icon_curves = image.curves.size();
+  std::set<int> hidden;
+  for (const Active& a : active) {
+    const std::vector<int> curves = pacemod::selectCurves(image, a.encoding->curves);
+    const size_t level = static_cast<size_t>(a.level);
+    if (a.encoding->channel == Channel::FillColor) {
+      for (int index : curves) {
+        DiffusionCurve& curve = image.curves[static_cast<size_t>(index)];
+        replaceColor(curve.left_colors, a.encoding->replace, a.encoding->colors[level]);
+        replaceColor(curve.right_colors, a.encoding->replace, a.encoding->colors[level]);
+      }
+    } else if (a.encoding->channel == Channel::GlyphScale) {
+      scaleAboutCentre(image, curves, a.encoding->numbers[level]);
+    } else if (a.encoding->channel == Channel::Hide) {
+      hidden.insert(a.encoding->hidden[level].begin(), a.encoding->hidden[level].end());
+    }
+  }
+  for (const Active& a : active) {
+    if (a.encoding->channel != Channel::Inflate) continue;
+    const double offset = a.encoding->numbers[static_cast<size_t>(a.level)];
+    const std::vector<int> curves =
+        without(pacemod::selectCurves(image, a.encoding->curves), hidden);
+    if (offset != 0.0) pacemod::inflateCurves(image, curves, offset, design.size_mm);
+  }
+  applyWaveEncodings(image, active, design, model);
+  applyGradientEncodings(image, active, hidden, design);
+  for (const Active& a : active) {
+    if (a.encoding->channel != Channel::ColourFrequency) continue;
+    applyDashEncoding(image, a, without(pacemod::selectCurves(image, a.encoding->curves), hidden),
+                      design, model);
+  }
+  for (auto it = hidden.rbegin(); it != hidden.rend(); ++it) {
+    if (*it < 0 || *it >= static_cast<int>(icon_curves)) {
+      throw std::invalid_argument("design " + design.name + ": hidden curve " +
+                                  std::to_string(*it) + " is not a curve of the icon");
+    }
+    image.curves.erase(image.curves.begin() + *it);
+  }
+  return image;
+}
+
+}  // namespace vicc_glyphs::design

@@ -1,0 +1,147 @@
+#include "vicc_glyphs/ros/glyph_server.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+#include "vicc_glyphs/design/design_builder.hpp"
+#include "vicc_glyphs/perception/perception_model_yaml.hpp"
+#include "vicc_glyphs/render/png_output.hpp"
+#include "vicc_glyphs/ros/image_message.hpp"
+
+namespace vicc_glyphs::ros_glyph {
+namespace {
+
+constexpr int kMaxSize = 4096;
+
+std::string stringParameter(const ros::NodeHandle& nh, const std::string& name,
+                            const std::string& fallback) {
+  if (!nh.hasParam(name)) return fallback;
+  std::string value;
+  if (!nh.getParam(name, value) || value.empty()) {
+    throw std::invalid_argument("parameter ~" + name + " must be a non-empty string");
+  }
+  return value;
+}
+
+}  // namespace
+
+GlyphServerParameters readGlyphServerParameters(const ros::NodeHandle& private_nh) {
+  GlyphServerParameters parameters;
+  parameters.designs_dir = stringParameter(private_nh, "designs_dir", VICC_GLYPHS_DESIGNS_DIR);
+  parameters.perception_model =
+      stringParameter(private_nh, "perception_model", VICC_GLYPHS_DEFAULT_MODEL);
+  if (private_nh.hasParam("cache_size")) {
+    int size = 0;
+    if (!private_nh.getParam("cache_size", size) || size < 1 || size > 10000) {
+      throw std::invalid_argument("parameter ~cache_size must be an integer from 1 to 10000");
+    }
+    parameters.cache_size = size;
+  }
+  return parameters;
+}
+
+GlyphServer::GlyphServer(ros::NodeHandle nh, ros::NodeHandle private_nh)
+    : private_nh_(private_nh),
+      parameters_(readGlyphServerParameters(private_nh)),
+      model_(perception::loadPerceptionModel(parameters_.perception_model)),
+      transport_(private_nh) {
+  if (!std::filesystem::is_directory(parameters_.designs_dir)) {
+    throw std::runtime_error("parameter ~designs_dir: " + parameters_.designs_dir +
+                             " is not a directory");
+  }
+  for (const auto& file : std::filesystem::directory_iterator(parameters_.designs_dir)) {
+    if (file.path().extension() != ".yaml") continue;
+    const std::string name = file.path().stem().string();
+    DesignEntry& entry = designs_[name];
+    entry.design = design::loadDesign(file.path().string(), model_);
+    entry.publisher = transport_.advertise(
+        name + "/image", 1, [this, name](const image_transport::SingleSubscriberPublisher& pub) {
+          onSubscribe(name, pub);
+        });
+  }
+  if (designs_.empty()) {
+    throw std::runtime_error("parameter ~designs_dir: no design (.yaml) in " +
+                             parameters_.designs_dir);
+  }
+  service_ = private_nh_.advertiseService("render", &GlyphServer::render, this);
+  (void)nh;
+  ROS_INFO("glyph_server: %zu designs from %s", designs_.size(), parameters_.designs_dir.c_str());
+}
+
+void GlyphServer::onSubscribe(const std::string& design,
+                              const image_transport::SingleSubscriberPublisher& pub) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const DesignEntry& entry = designs_.at(design);
+  if (entry.latest) pub.publish(entry.latest);
+}
+
+cv::Mat GlyphServer::renderCached(const DesignEntry& entry, const std::vector<int>& levels,
+                                  int size) {
+  std::vector<int> key_levels = levels;
+  key_levels.push_back(size);
+  const CacheKey key{entry.design.name, key_levels};
+  const auto found = cache_.find(key);
+  if (found != cache_.end()) return found->second;
+  const DiffusionCurveImage image = design::buildGlyph(entry.design, levels, model_, size);
+  RenderOptions options;
+  options.background = entry.design.background;
+  RenderResult result;
+  renderer_.render(image, options, result);
+  cv::Mat rgb8 = toRgb8(result.image);
+  cache_[key] = rgb8;
+  cache_order_.push_back(key);
+  while (static_cast<int>(cache_order_.size()) > parameters_.cache_size) {
+    cache_.erase(cache_order_.front());
+    cache_order_.pop_front();
+  }
+  return rgb8;
+}
+
+bool GlyphServer::render(vicc_msgs::RenderGlyph::Request& request,
+                         vicc_msgs::RenderGlyph::Response& response) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  response.success = false;
+  const auto found = designs_.find(request.design);
+  if (found == designs_.end()) {
+    response.message = "unknown design '" + request.design + "'";
+    return true;
+  }
+  if (request.names.size() != request.values.size()) {
+    response.message = "names and values differ in number";
+    return true;
+  }
+  if (request.size < 0 || request.size > kMaxSize) {
+    response.message = "size must be 0 (design default) to " + std::to_string(kMaxSize);
+    return true;
+  }
+  try {
+    std::map<std::string, double> values;
+    for (size_t i = 0; i < request.names.size(); ++i) {
+      if (!values.emplace(request.names[i], request.values[i]).second) {
+        throw design::DesignValueError(request.names[i] + " is given twice");
+      }
+    }
+    DesignEntry& entry = found->second;
+    const std::vector<int> levels = entry.design.levelsFor(values);
+    const cv::Mat rgb8 = renderCached(entry, levels, request.size);
+    response.image = toImageMsg(rgb8, "glyph");
+    response.image.header.stamp = ros::Time::now();
+    if (request.want_png) {
+      cv::Mat bgr;
+      cv::cvtColor(rgb8, bgr, cv::COLOR_RGB2BGR);
+      cv::imencode(".png", bgr, response.png);
+    }
+    entry.latest = boost::make_shared<sensor_msgs::Image>(response.image);
+    if (entry.publisher.getNumSubscribers() > 0) entry.publisher.publish(entry.latest);
+    response.success = true;
+    response.message = "ok";
+  } catch (const std::exception& e) {
+    response.message = request.design + ": " + e.what();
+  }
+  return true;
+}
+
+}  // namespace vicc_glyphs::ros_glyph

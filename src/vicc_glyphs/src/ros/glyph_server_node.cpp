@@ -1,0 +1,16 @@
+// glyph_server node: see include/vicc_glyphs/ros/glyph_server.hpp.
+#include <ros/ros.h>
+
+#include "vicc_glyphs/ros/glyph_server.hpp"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "glyph_server");
+  try {
+    vicc_glyphs::ros_glyph::GlyphServer server(ros::NodeHandle(), ros::NodeHandle("~"));
+    ros::spin();
+  } catch (const std::exception& e) {
+    ROS_FATAL("glyph_server: %s", e.what());
+    return 1;
+  }
+  return 0;
+}

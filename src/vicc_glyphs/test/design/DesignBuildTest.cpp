@@ -1,0 +1,162 @@
+// Building the shipped designs: the encodings change the curves they name and only those.
+#include <gtest/gtest.h>
+
+#include "vicc_glyphs/design/design_builder.hpp"
+#include "vicc_glyphs/perception/perception_model_yaml.hpp"
+#include "vicc_glyphs/render/renderer.hpp"
+
+using namespace vicc_glyphs;
+using namespace vicc_glyphs::design;
+
+namespace {
+
+const perception::PerceptionModel& model() {
+  static const auto loaded = perception::loadPerceptionModel(std::string(VICC_GLYPHS_CONFIG_DIR) +
+                                                             "/perception_model.yaml");
+  return loaded;
+}
+
+GlyphDesign shipped(const std::string& name) {
+  return loadDesign(std::string(VICC_GLYPHS_DESIGNS_DIR) + "/" + name + ".yaml", model());
+}
+
+// Shoelace area of a curve's control polygon (close enough to compare sizes).
+double polygonSignedArea(const DiffusionCurve& curve) {
+  double area = 0.0;
+  const auto& p = curve.control_points;
+  for (size_t i = 0; i + 1 < p.size(); ++i) {
+    area += p[i].x() * p[i + 1].y() - p[i + 1].x() * p[i].y();
+  }
+  return 0.5 * area;
+}
+
+double polygonArea(const DiffusionCurve& curve) { return std::abs(polygonSignedArea(curve)); }
+
+bool enclosedSideIsLeftForTest(const DiffusionCurve& curve) {
+  return polygonSignedArea(curve) < 0.0;  // positive = clockwise on screen: inside on the right
+}
+
+bool sameGeometry(const DiffusionCurve& a, const DiffusionCurve& b) {
+  if (a.control_points.size() != b.control_points.size()) return false;
+  for (size_t i = 0; i < a.control_points.size(); ++i) {
+    if ((a.control_points[i] - b.control_points[i]).norm() > 1e-9) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST(DesignBuild, RainSineWavesTheDropsOnlyAndMoreForLowerProbability) {
+  const GlyphDesign design = shipped("rain_forecast_sine");
+  const DiffusionCurveImage icon = loadIcon(design, 256);
+  ASSERT_EQ(icon.curves.size(), 4u);
+  const DiffusionCurveImage certain =
+      buildGlyph(design, design.levelsFor({{"probability", 95}, {"amount", 5}}), model());
+  const DiffusionCurveImage uncertain =
+      buildGlyph(design, design.levelsFor({{"probability", 10}, {"amount", 5}}), model());
+  ASSERT_EQ(certain.curves.size(), 4u);
+  EXPECT_TRUE(sameGeometry(certain.curves[0], icon.curves[0]));  // the cloud is untouched
+  for (int drop = 1; drop <= 3; ++drop) {
+    EXPECT_FALSE(sameGeometry(certain.curves[drop], icon.curves[drop])) << drop;
+    // More waves need more knot points.
+    EXPECT_GT(uncertain.curves[drop].control_points.size(),
+              certain.curves[drop].control_points.size())
+        << drop;
+  }
+  EXPECT_EQ(validate(uncertain), "");
+}
+
+TEST(DesignBuild, RainAmountColoursAndSizesTheDrops) {
+  const GlyphDesign design = shipped("rain_forecast_sine");
+  const DiffusionCurveImage light =
+      buildGlyph(design, design.levelsFor({{"probability", 95}, {"amount", 1}}), model());
+  const DiffusionCurveImage heavy =
+      buildGlyph(design, design.levelsFor({{"probability", 95}, {"amount", 20}}), model());
+  EXPECT_GT(polygonArea(heavy.curves[2]), 1.2 * polygonArea(light.curves[2]));
+  // Inner colour of a drop: the fill colour of its level (9ecae1 light, 08306b heavy).
+  const auto has = [](const DiffusionCurve& c, const Color& rgb) {
+    for (const auto* side : {&c.left_colors, &c.right_colors}) {
+      for (const ColorPoint& p : *side) {
+        if ((p.rgb - rgb).norm() < 1e-3) return true;
+      }
+    }
+    return false;
+  };
+  EXPECT_TRUE(has(light.curves[1], Color(0x9e, 0xca, 0xe1) / 255.0));
+  EXPECT_TRUE(has(heavy.curves[1], Color(0x08, 0x30, 0x6b) / 255.0));
+}
+
+TEST(DesignBuild, RainDashesHideDropsAndDashTheRest) {
+  const GlyphDesign design = shipped("rain_forecast_dashes");
+  const DiffusionCurveImage light =
+      buildGlyph(design, design.levelsFor({{"probability", 50}, {"amount", 1}}), model());
+  const DiffusionCurveImage heavy =
+      buildGlyph(design, design.levelsFor({{"probability", 50}, {"amount", 20}}), model());
+  // Light: cloud + 1 drop (+ its barrier); heavy: cloud + 3 drops + 3 barriers.
+  EXPECT_EQ(light.curves.size(), 3u);
+  EXPECT_EQ(heavy.curves.size(), 7u);
+}
+
+TEST(DesignBuild, IntracranialPressureInflatesTheBrainNotTheHead) {
+  const GlyphDesign design = shipped("intracranial_pressure");
+  const DiffusionCurveImage normal =
+      buildGlyph(design, design.levelsFor({{"pressure", 10}, {"category", 0}}), model());
+  const DiffusionCurveImage high =
+      buildGlyph(design, design.levelsFor({{"pressure", 35}, {"category", 2}}), model());
+  EXPECT_TRUE(sameGeometry(normal.curves[0], high.curves[0]));
+  EXPECT_GT(polygonArea(high.curves[1]), 1.1 * polygonArea(normal.curves[1]));
+}
+
+TEST(DesignBuild, RendersAtTheRequestedSize) {
+  const GlyphDesign design = shipped("rain_forecast_sine");
+  const DiffusionCurveImage image = buildGlyph(design, {2, 1}, model(), 128);
+  const RenderResult result = renderDiffusionCurves(image);
+  EXPECT_EQ(result.image.cols, 128);
+  EXPECT_THROW(buildGlyph(design, {5, 1}, model()), DesignValueError);
+  EXPECT_THROW(buildGlyph(design, {1}, model()), DesignValueError);
+}
+
+TEST(DesignBuild, Covid19GradientGlyphAddsBandAndDashedCentre) {
+  const GlyphDesign design = shipped("covid19_gradient");
+  const DiffusionCurveImage icon = loadIcon(design, 192);
+  ASSERT_EQ(icon.curves.size(), 1u);
+  const auto build = [&](double incidence, double change, double hosp_change) {
+    return buildGlyph(design,
+                      design.levelsFor({{"incidence", incidence},
+                                        {"hospitalisation", 3},
+                                        {"incidence_change", change},
+                                        {"hospitalisation_change", hosp_change}}),
+                      model(), 192);
+  };
+  // Steady: no band, no dashes; only the centre region curve is added.
+  const DiffusionCurveImage steady = build(2000, 0, 0);  // glyph scale 1
+  EXPECT_EQ(steady.curves.size(), 2u);
+  EXPECT_TRUE(sameGeometry(steady.curves[0], icon.curves[0]));
+  // Rising: waved contour + band curve + centre curve + its dash barrier.
+  const DiffusionCurveImage rising = build(400, 15, 30);
+  EXPECT_EQ(rising.curves.size(), 4u);
+  EXPECT_FALSE(sameGeometry(rising.curves[0], icon.curves[0]));
+  EXPECT_EQ(validate(rising), "");
+  // Size follows the incidence (Table 6.8): glyph scale 0.6 vs 1.0.
+  const DiffusionCurveImage small = build(10, 0, 0), large = build(2000, 0, 0);
+  EXPECT_NEAR(polygonArea(small.curves[0]) / polygonArea(large.curves[0]), 0.36, 0.01);
+}
+
+TEST(DesignBuild, BandIsDarkerForARiseAndBrighterForAFall) {
+  const GlyphDesign design = shipped("covid19_gradient");
+  const auto bandColor = [&](double change) {
+    const DiffusionCurveImage image = buildGlyph(design,
+                                                 design.levelsFor({{"incidence", 400},
+                                                                   {"hospitalisation", 3},
+                                                                   {"incidence_change", change},
+                                                                   {"hospitalisation_change", 0}}),
+                                                 model(), 192);
+    const DiffusionCurve& contour = image.curves[0];
+    const auto& inside =
+        enclosedSideIsLeftForTest(contour) ? contour.left_colors : contour.right_colors;
+    return inside.front().rgb;
+  };
+  const Color fill = Color(0x14, 0x81, 0xd6) / 255.0;  // hospitalisation 3 -> ]2, 3] level
+  EXPECT_LT(bandColor(15).maxCoeff(), 0.95 * fill.maxCoeff());
+  EXPECT_GT(bandColor(-15).maxCoeff(), 1.05 * fill.maxCoeff());
+}

@@ -1,0 +1,105 @@
+// Against a running glyph_server: valid request -> image of the right size (and PNG bytes);
+// unknown design, NaN, out-of-range and malformed requests -> success false with a message
+// naming the problem, and the server still answers afterwards; the image topic delivers.
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <sensor_msgs/Image.h>
+#include <vicc_msgs/RenderGlyph.h>
+
+#include <cmath>
+
+namespace {
+
+vicc_msgs::RenderGlyph request(const std::string& design, std::vector<std::string> names,
+                               std::vector<double> values, int size = 64, bool png = false) {
+  vicc_msgs::RenderGlyph call;
+  call.request.design = design;
+  call.request.names = std::move(names);
+  call.request.values = std::move(values);
+  call.request.size = size;
+  call.request.want_png = png;
+  return call;
+}
+
+bool callRender(vicc_msgs::RenderGlyph& call) {
+  return ros::service::call("/glyph_server/render", call);
+}
+
+}  // namespace
+
+TEST(GlyphServer, ValidRequestGivesAnImageOfTheRequestedSize) {
+  ASSERT_TRUE(ros::service::waitForService("/glyph_server/render", ros::Duration(60)));
+  auto call = request("rain_forecast_sine", {"probability", "amount"}, {65, 3}, 96, true);
+  ASSERT_TRUE(callRender(call));
+  ASSERT_TRUE(call.response.success) << call.response.message;
+  EXPECT_EQ(call.response.image.width, 96u);
+  EXPECT_EQ(call.response.image.encoding, "rgb8");
+  EXPECT_EQ(call.response.image.step, 3u * 96u);
+  EXPECT_EQ(call.response.image.data.size(), call.response.image.step * call.response.image.height);
+  ASSERT_GT(call.response.png.size(), 8u);
+  EXPECT_EQ(call.response.png[1], 'P');  // PNG signature
+  // The same levels again (other values in the same bins): the cached image, identical.
+  auto again = request("rain_forecast_sine", {"probability", "amount"}, {69, 4}, 96);
+  ASSERT_TRUE(callRender(again));
+  EXPECT_EQ(again.response.image.data, call.response.image.data);
+  EXPECT_TRUE(again.response.png.empty());
+}
+
+TEST(GlyphServer, BadRequestsAreErrorsAndTheServerStaysAlive) {
+  ASSERT_TRUE(ros::service::waitForService("/glyph_server/render", ros::Duration(60)));
+  const struct {
+    vicc_msgs::RenderGlyph call;
+    std::string expected;
+  } cases[] = {
+      {request("no_such_design", {}, {}), "unknown design 'no_such_design'"},
+      {request("rain_forecast_sine", {"probability", "amount"}, {std::nan(""), 3}),
+       "probability is NaN"},
+      {request("rain_forecast_sine", {"probability", "amount"}, {140, 3}),
+       "probability = 140 is outside its domain"},
+      {request("rain_forecast_sine", {"probability"}, {50}), "missing value for 'amount'"},
+      {request("rain_forecast_sine", {"probability", "amount"}, {50}), "differ in number"},
+      {request("rain_forecast_sine", {"probability", "amount", "wind"}, {50, 1, 2}),
+       "no variable 'wind'"},
+      {request("rain_forecast_sine", {"probability", "amount"}, {50, 1}, -5), "size must be"},
+  };
+  for (auto c : cases) {
+    ASSERT_TRUE(callRender(c.call)) << c.expected;
+    EXPECT_FALSE(c.call.response.success) << c.expected;
+    EXPECT_NE(c.call.response.message.find(c.expected), std::string::npos)
+        << c.call.response.message;
+    EXPECT_TRUE(c.call.response.image.data.empty());
+  }
+  auto alive = request("intracranial_pressure", {"pressure", "category"}, {30, 2}, 48);
+  ASSERT_TRUE(callRender(alive));
+  EXPECT_TRUE(alive.response.success) << alive.response.message;
+  EXPECT_EQ(alive.response.image.width, 48u);
+}
+
+TEST(GlyphServer, ImageTopicDeliversRenderedGlyphsToSubscribers) {
+  ASSERT_TRUE(ros::service::waitForService("/glyph_server/render", ros::Duration(60)));
+  ros::NodeHandle nh;
+  sensor_msgs::Image received;
+  bool got = false;
+  ros::Subscriber sub = nh.subscribe<sensor_msgs::Image>(
+      "/glyph_server/rain_forecast_dashes/image", 1, [&](const sensor_msgs::ImageConstPtr& msg) {
+        received = *msg;
+        got = true;
+      });
+  for (int i = 0; i < 100 && sub.getNumPublishers() == 0; ++i) ros::Duration(0.05).sleep();
+  ASSERT_GT(sub.getNumPublishers(), 0u);
+  auto call = request("rain_forecast_dashes", {"probability", "amount"}, {50, 20}, 80);
+  ASSERT_TRUE(callRender(call));
+  ASSERT_TRUE(call.response.success) << call.response.message;
+  for (int i = 0; i < 100 && !got; ++i) ros::Duration(0.05).sleep();
+  ASSERT_TRUE(got);
+  EXPECT_EQ(received.width, 80u);
+  EXPECT_EQ(received.data, call.response.image.data);
+}
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "glyph_server_rostest");
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  return RUN_ALL_TESTS();
+}
