@@ -19,6 +19,8 @@ const std::vector<OptionSpec>& renderOptions() {
       {"size", "N", "output width in pixels (default: the input's own width)"},
       {"dci", "OUT.xml", "also write the loaded (and scaled) DCI as Orzan XML"},
       {"cycles", "N", "multigrid V-cycles on the finest grid (default 2)"},
+      {"color", "RRGGBB", "SVG: the colour of currentColor (default 000000, black)"},
+      {"lenient", "", "SVG: unsupported features become warnings and are left out"},
       {"report", "", "print timings, multigrid levels and residuals"},
       {"help", "", "show this help"},
   };
@@ -27,7 +29,7 @@ const std::vector<OptionSpec>& renderOptions() {
 
 void printUsage(std::ostream& out) {
   out << "usage: vicc_glyph render INPUT.(svg|xml|png) --out OUT.png [--size N] [--dci OUT.xml]\n"
-         "                        [--cycles N] [--report]\n\n"
+         "                        [--cycles N] [--color RRGGBB] [--lenient] [--report]\n\n"
          "Renders a diffusion curve image (Orzan XML), an SVG icon or a PNG (traced) to PNG.\n\n"
       << formatOptions(renderOptions());
 }
@@ -50,6 +52,17 @@ void printReport(const RenderResult& result, std::ostream& out) {
   out << std::defaultfloat;
 }
 
+// "RRGGBB" (optionally with a leading '#') as a colour in [0, 1].
+Color parseHexColor(const std::string& text) {
+  const std::string hex = !text.empty() && text[0] == '#' ? text.substr(1) : text;
+  if (hex.size() != 6 || hex.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos) {
+    throw UsageError("--color needs RRGGBB (6 hex digits), got '" + text + "'");
+  }
+  Color color;
+  for (int i = 0; i < 3; ++i) color[i] = std::stoi(hex.substr(2 * i, 2), nullptr, 16) / 255.0;
+  return color;
+}
+
 }  // namespace
 
 int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -57,6 +70,10 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
   std::string input, output, dci;
   int size = 0;
   bool report = false;
+  SvgImportOptions svg;
+  svg.warn = [&err](const std::string& warning) {
+    err << "vicc_glyph render: warning: " << warning << "\n";
+  };
   try {
     const ParsedArguments parsed = parseArguments(args, renderOptions());
     if (parsed.has("help")) {
@@ -75,6 +92,8 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
     if (parsed.has("cycles")) {
       options.multigrid.fine_cycles = parseInteger("cycles", parsed.value("cycles"), 0, 100);
     }
+    if (parsed.has("color")) svg.current_color = parseHexColor(parsed.value("color"));
+    svg.lenient = parsed.has("lenient");
     dci = parsed.value("dci");
     report = parsed.has("report");
   } catch (const UsageError& e) {
@@ -85,7 +104,7 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
   options.multigrid.record_residuals = report;
 
   try {
-    const DiffusionCurveImage image = loadDiffusionCurves(input, size);
+    const DiffusionCurveImage image = loadDiffusionCurves(input, size, svg);
     if (!dci.empty()) writeOrzanXml(image, dci);
     RenderResult result;
     DiffusionCurveRenderer().render(image, options, result);
