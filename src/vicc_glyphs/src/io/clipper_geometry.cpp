@@ -70,6 +70,14 @@ void VertexBudget::spend(std::size_t vertices) {
   }
 }
 
+void checkShapeVertices(std::size_t vertices) {
+  if (vertices > kMaxVerticesPerShape) {
+    throw std::length_error("shape with " + std::to_string(vertices) +
+                            " polygon vertices after flattening: more than " +
+                            std::to_string(kMaxVerticesPerShape) + " per shape (limit)");
+  }
+}
+
 void flattenChain(const Contour& chain, double tolerance, VertexBudget& budget,
                   std::vector<Point2>& out) {
   if (chain.empty()) return;
@@ -118,9 +126,11 @@ std::vector<Point2> clipPolygonToBox(const std::vector<Point2>& polygon,
 Paths fillArea(const std::vector<Subpath>& subpaths, FillRule rule, const IntegerFrame& frame,
                double tolerance, VertexBudget& budget) {
   Paths paths;
+  std::size_t vertices = 0;
   for (const Subpath& subpath : subpaths) {
     std::vector<Point2> polyline;
     flattenChain(subpath.points, tolerance, budget, polyline);
+    checkShapeVertices(vertices += polyline.size());
     // Non-finite points (overflowing transforms) cannot be placed; the clip drops them.
     polyline.erase(std::remove_if(polyline.begin(), polyline.end(),
                                   [](const Point2& p) { return !p.allFinite(); }),

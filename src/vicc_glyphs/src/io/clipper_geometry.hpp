@@ -50,6 +50,13 @@ class VertexBudget {
   std::size_t used_ = 0;
 };
 
+/// Vertices one shape's flattened outline may have: Clipper's joining of output polygons is
+/// quadratic in their local minima (a 30,000-point star took 10 minutes), so larger shapes
+/// are refused (std::length_error) instead.
+constexpr std::size_t kMaxVerticesPerShape = 20000;
+/// Throws std::length_error when `vertices` exceeds kMaxVerticesPerShape.
+void checkShapeVertices(std::size_t vertices);
+
 /// Appends the flattened chain (3K+1 points) to `out`, skipping its first point when `out`
 /// already ends there; every Bezier is split evenly so no chord deviates more than `tolerance`.
 void flattenChain(const Contour& chain, double tolerance, VertexBudget& budget,

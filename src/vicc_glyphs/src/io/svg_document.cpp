@@ -24,7 +24,7 @@ using tinyxml2::XMLElement;
 
 // Element nesting plus <use> indirections; below tinyxml2's own limit of 100 nested elements.
 constexpr int kMaxDepth = 64;
-constexpr std::size_t kMaxPolygonVertices = 2000000;
+constexpr std::size_t kMaxPolygonVertices = 200000;
 // Canvas margin in pixels: region boundaries along the image border lie outside the image.
 constexpr double kCanvasMargin = 2.0;
 // Painted areas lose gaps and parts narrower than twice this (pixels): see withoutSubpixelDetail.

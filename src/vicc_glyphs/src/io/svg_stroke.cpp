@@ -97,9 +97,11 @@ Paths strokeArea(const std::vector<Subpath>& subpaths, const Affine2& user_to_pi
   const double units_per_user = frame.unitsPerPixel() * pixels_per_user;
   ClipperLib::ClipperOffset offset(std::max(stroke.miter_limit, 1.0),
                                    0.25 * tolerance * frame.unitsPerPixel());
+  std::size_t vertices = 0;
   for (const Subpath& subpath : subpaths) {
     std::vector<Point2> polyline;
     flattenChain(subpath.points, tolerance / pixels_per_user, budget, polyline);
+    checkShapeVertices(vertices += polyline.size());
     if (stroke.dashes.empty()) {
       offset.AddPath(toUserIntegers(polyline, units_per_user), joinType(stroke.join),
                      subpath.closed ? ClipperLib::etClosedLine : endType(stroke.cap));

@@ -201,6 +201,18 @@ TEST(SvgPainting, TooManyPixelsFailCleanly) {
   EXPECT_NE(errorMessage(huge).find("pixels"), std::string::npos);
 }
 
+// 30,000 segments fit the control point limit, but Clipper would need minutes for them.
+TEST(SvgPainting, HugeSegmentCountsFailCleanly) {
+  std::string d = "M 22 12";
+  for (int i = 1; i < 30000; ++i) {
+    const double angle = 2.0 * M_PI * i / 30000.0, radius = i % 2 ? 9.0 : 11.0;
+    d += " L " + std::to_string(12 + radius * std::cos(angle)) + " " +
+         std::to_string(12 + radius * std::sin(angle));
+  }
+  const std::string message = errorMessage(svg("<path d='" + d + " Z'/>"), 512);
+  EXPECT_NE(message.find("more than 20000 per shape"), std::string::npos) << message;
+}
+
 TEST(SvgPainting, UnsupportedFeaturesAreNamedOrWarnedAbout) {
   const std::string text = svg("<rect width='9' height='9'/><text x='1' y='20'>Hi</text>");
   EXPECT_NE(errorMessage(text).find("<text> is not supported"), std::string::npos);
