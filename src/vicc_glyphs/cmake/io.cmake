@@ -79,8 +79,11 @@ endif()
 
 if(CATKIN_ENABLE_TESTING)
   # The SVG painting model checked on rendered pixels (needs the renderer).
-  catkin_add_gtest(vicc_glyphs_svg_painting_test test/io/SvgPaintingTest.cpp)
-  target_include_directories(vicc_glyphs_svg_painting_test SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
+  catkin_add_gtest(vicc_glyphs_svg_painting_test test/io/SvgPaintingTest.cpp
+    test/io/SvgStylePartsTest.cpp)
+  target_include_directories(vicc_glyphs_svg_painting_test SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS}
+    ${VICC_GLYPHS_POLYCLIPPING_INCLUDE_DIRS})
+  target_include_directories(vicc_glyphs_svg_painting_test PRIVATE src/io)
   target_compile_options(vicc_glyphs_svg_painting_test PRIVATE ${VICC_WARNINGS})
   target_link_libraries(vicc_glyphs_svg_painting_test vicc_glyphs_io vicc_glyphs_render gtest_main)
 endif()
