@@ -8,12 +8,12 @@
 #include <set>
 #include <stdexcept>
 
-#include "svg_number_scanner.hpp"
 #include "svg_paint_server.hpp"
 #include "svg_path_data.hpp"
 #include "svg_shapes.hpp"
 #include "svg_style.hpp"
 #include "svg_transform.hpp"
+#include "svg_viewport.hpp"
 #include "xml_attributes.hpp"
 
 namespace vicc_glyphs {
@@ -62,7 +62,9 @@ class SvgWalker {
     }
     collect(*root);
     SvgPicture picture;
-    const Affine2 viewport = guarded(*root, [&] { return setupViewport(*root, picture); });
+    const SvgViewport viewport = guarded(*root, [&] { return svgViewport(*root, options_.size); });
+    picture.width = viewport.width;
+    picture.height = viewport.height;
     frame_ = IntegerFrame(picture.width, picture.height);
     picture.frame = frame_;
     // Flattening error small against a pixel at any size up to ~8000 px.
@@ -70,7 +72,7 @@ class SvgWalker {
     SvgStyle initial;
     initial.color = options_.current_color;
     PaintMap map;
-    walk(*root, viewport, initial, 0, map);
+    walk(*root, viewport.user_to_pixels, initial, 0, map);
     const Paths canvas = {rectangle(frame_, -kCanvasMargin, -kCanvasMargin,
                                     picture.width + kCanvasMargin, picture.height + kCanvasMargin)};
     picture.resolved = map.resolve(options_.background, canvas);
@@ -126,42 +128,6 @@ class SvgWalker {
     if (found == ids_.end())
       throw FormatError(source_, place(from), "no element with id '" + id + "'");
     return found->second;
-  }
-
-  // Maps the viewBox (or 0 0 width height) to pixels; with options.size > 0 the width becomes
-  // that many pixels. preserveAspectRatio is not needed: the image takes the viewBox's aspect.
-  Affine2 setupViewport(const XMLElement& root, SvgPicture& picture) const {
-    double x = 0.0, y = 0.0, w = 0.0, h = 0.0;
-    if (const char* view_box = root.Attribute("viewBox")) {
-      const std::string text(view_box);
-      SvgNumberScanner scanner(text);
-      x = scanner.number();
-      y = scanner.number();
-      w = scanner.number();
-      h = scanner.number();
-      if (!scanner.atEnd()) throw std::invalid_argument("viewBox needs exactly 4 numbers");
-    } else {
-      w = svgLength(root, "width", 0.0);
-      h = svgLength(root, "height", 0.0);
-    }
-    if (!(w > 0.0) || !(h > 0.0)) {
-      throw std::invalid_argument("no positive size: need viewBox or width and height");
-    }
-    const double scale = options_.size > 0 ? options_.size / w : 1.0;
-    const double width = std::ceil(w * scale - 1e-9);
-    const double height = std::ceil(h * scale - 1e-9);
-    if (!(width >= 1.0) || !(height >= 1.0) || !(width * height <= kMaxSvgPixels)) {
-      throw std::invalid_argument("image of " + std::to_string(width) + " x " +
-                                  std::to_string(height) + " pixels: more than the limit of " +
-                                  std::to_string(kMaxSvgPixels) + " pixels (viewBox " +
-                                  std::to_string(w) + " x " + std::to_string(h) + " at size " +
-                                  std::to_string(options_.size) + ")");
-    }
-    picture.width = static_cast<int>(width);
-    picture.height = static_cast<int>(height);
-    Affine2 viewport = Affine2::Identity();
-    viewport.scale(scale).translate(Eigen::Vector2d(-x, -y));
-    return viewport;
   }
 
   void walk(const XMLElement& element, const Affine2& parent_transform,

@@ -196,7 +196,11 @@ std::string errorMessage(const std::string& text, int size = 0) {
 
 TEST(SvgPainting, TooManyPixelsFailCleanly) {
   const std::string tall = "<svg viewBox='0 0 1 195'><rect width='1' height='9'/></svg>";
-  EXPECT_NE(errorMessage(tall, 512).find("limit of"), std::string::npos);
+  EXPECT_NE(
+      errorMessage(tall, 512).find("image of 512 x 99840 pixels (viewBox 1 x 195 at width 512): "
+                                   "outside 1 .. 16777216 pixels (the limit)"),
+      std::string::npos)
+      << errorMessage(tall, 512);
   const std::string huge = "<svg viewBox='0 0 100000 100000'><rect width='9' height='9'/></svg>";
   EXPECT_NE(errorMessage(huge).find("pixels"), std::string::npos);
 }
