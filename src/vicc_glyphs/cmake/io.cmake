@@ -25,7 +25,6 @@ add_library(vicc_glyphs_formats
   src/io/svg_path_data.cpp
   src/io/svg_shapes.cpp
   src/io/svg_style.cpp
-  src/io/fill_regions.cpp
   src/io/side_colors.cpp
   src/io/svg_document.cpp
   src/io/svg_import.cpp
@@ -43,6 +42,21 @@ add_library(vicc_glyphs_io
 target_include_directories(vicc_glyphs_io SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS} ${VICC_GLYPHS_POTRACE_INCLUDE})
 target_compile_options(vicc_glyphs_io PRIVATE ${VICC_WARNINGS})
 target_link_libraries(vicc_glyphs_io vicc_glyphs_formats ${VICC_GLYPHS_POTRACE} ${OpenCV_LIBRARIES})
+
+# The SVG painting model on polygons: Clipper (Debian libpolyclipping-dev, pkg-config polyclipping)
+# for boolean operations and stroke offsetting (Boost licence: fine in the formats library).
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(VICC_GLYPHS_POLYCLIPPING REQUIRED polyclipping)
+target_sources(vicc_glyphs_formats PRIVATE
+  src/io/clipper_geometry.cpp
+  src/io/paint_map.cpp
+  src/io/svg_stroke.cpp
+  src/io/svg_css.cpp
+  src/io/svg_paint_server.cpp
+  src/io/region_curves.cpp
+  src/io/svg_viewport.cpp)
+target_include_directories(vicc_glyphs_formats SYSTEM PRIVATE ${VICC_GLYPHS_POLYCLIPPING_INCLUDE_DIRS})
+target_link_libraries(vicc_glyphs_formats ${VICC_GLYPHS_POLYCLIPPING_LIBRARIES})
 
 install(TARGETS vicc_glyphs_formats vicc_glyphs_io
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
@@ -69,4 +83,15 @@ if(CATKIN_ENABLE_TESTING)
   # PublishedSampleTest renders the samples it reads.
   target_link_libraries(vicc_glyphs_io_test vicc_glyphs_io vicc_glyphs_render ${OpenCV_LIBRARIES}
     gtest_main)
+endif()
+
+if(CATKIN_ENABLE_TESTING)
+  # The SVG painting model checked on rendered pixels (needs the renderer).
+  catkin_add_gtest(vicc_glyphs_svg_painting_test test/io/SvgPaintingTest.cpp
+    test/io/SvgStylePartsTest.cpp)
+  target_include_directories(vicc_glyphs_svg_painting_test SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS}
+    ${VICC_GLYPHS_POLYCLIPPING_INCLUDE_DIRS})
+  target_include_directories(vicc_glyphs_svg_painting_test PRIVATE src/io)
+  target_compile_options(vicc_glyphs_svg_painting_test PRIVATE ${VICC_WARNINGS})
+  target_link_libraries(vicc_glyphs_svg_painting_test vicc_glyphs_io vicc_glyphs_render gtest_main)
 endif()

@@ -52,3 +52,10 @@ if(CATKIN_ENABLE_TESTING)
   target_compile_options(vicc_glyphs_ros_test PRIVATE ${VICC_WARNINGS})
   target_link_libraries(vicc_glyphs_ros_test vicc_glyphs_ros gtest_main)
 endif()
+
+# Fidelity benchmark helper (bench/fidelity/run_fidelity.sh): dark-mask IoU and gray difference
+# between a vicc_glyph render and rsvg-convert's.
+add_executable(vicc_glyph_fidelity_compare bench/fidelity/compare_masks.cpp)
+target_compile_options(vicc_glyph_fidelity_compare PRIVATE ${VICC_WARNINGS})
+target_include_directories(vicc_glyph_fidelity_compare SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
+target_link_libraries(vicc_glyph_fidelity_compare ${OpenCV_LIBS})

@@ -30,11 +30,12 @@ DiffusionCurveImage loadXml(const std::string& path) {
   return readOrzanXml(path);
 }
 
-DiffusionCurveImage loadByExtension(const std::string& path, int size) {
+DiffusionCurveImage loadByExtension(const std::string& path, int size,
+                                    const SvgImportOptions& svg) {
   const std::string extension = lowerExtension(path);
   if (extension == "xml") return loadXml(path);
   if (extension == "svg") {
-    SvgImportOptions options;
+    SvgImportOptions options = svg;
     options.size = size;
     return importSvg(path, options);
   }
@@ -46,8 +47,13 @@ DiffusionCurveImage loadByExtension(const std::string& path, int size) {
 }  // namespace
 
 DiffusionCurveImage loadDiffusionCurves(const std::string& path, int size) {
+  return loadDiffusionCurves(path, size, SvgImportOptions{});
+}
+
+DiffusionCurveImage loadDiffusionCurves(const std::string& path, int size,
+                                        const SvgImportOptions& svg) {
   if (size < 0) throw FormatError(path, "", "negative target size");
-  DiffusionCurveImage image = loadByExtension(path, size);
+  DiffusionCurveImage image = loadByExtension(path, size, svg);
   const std::string extension = lowerExtension(path);
   if (size > 0 && extension != "svg") image = scaledToWidth(image, size);
   const std::string problem = validate(image);

@@ -4,9 +4,7 @@
 
 namespace vicc_glyphs {
 namespace io_detail {
-namespace {
-
-std::vector<ColorPoint> reduceRuns(const std::vector<ColorPoint>& samples, double segments) {
+std::vector<ColorPoint> reduceColorRuns(const std::vector<ColorPoint>& samples, double segments) {
   std::vector<ColorPoint> points;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const bool same_as_previous = i > 0 && samples[i].rgb == samples[i - 1].rgb;
@@ -19,8 +17,6 @@ std::vector<ColorPoint> reduceRuns(const std::vector<ColorPoint>& samples, doubl
   }
   return points;
 }
-
-}  // namespace
 
 std::vector<SideSample> sideSamples(const DiffusionCurve& curve, int per_segment,
                                     std::size_t max_samples,
@@ -55,8 +51,8 @@ void assignSideColors(DiffusionCurve& curve, const std::vector<SideSample>& samp
     left.push_back({sample.s, color_at(sample.left)});
     right.push_back({sample.s, color_at(sample.right)});
   }
-  curve.left_colors = reduceRuns(left, segments);
-  curve.right_colors = reduceRuns(right, segments);
+  curve.left_colors = reduceColorRuns(left, segments);
+  curve.right_colors = reduceColorRuns(right, segments);
 }
 
 }  // namespace io_detail

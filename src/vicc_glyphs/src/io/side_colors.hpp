@@ -25,6 +25,10 @@ std::vector<SideSample> sideSamples(const DiffusionCurve& curve, int per_segment
                                     std::size_t max_samples,
                                     const std::function<double(double speed)>& offset);
 
+/// Colour points with runs of equal colours reduced to their ends; a single colour becomes the
+/// two points 0 and `segments` (the whole curve). `samples` must not be empty.
+std::vector<ColorPoint> reduceColorRuns(const std::vector<ColorPoint>& samples, double segments);
+
 /// Sets left_colors / right_colors from `color_at` at the samples (runs of equal colours are
 /// reduced to their ends; a uniform side spans [0, K] with two points). With no samples both
 /// sides get `fallback`.

@@ -1,11 +1,12 @@
 #pragma once
 // Walks an SVG document: the viewport (viewBox or width/height, scaled to the requested
-// width), groups with their transforms and inherited styles, and every filled path or basic
-// shape, collected in painting order as contours in pixel coordinates.
+// width), <style> sheets, groups with their transforms and inherited styles, <use>
+// references, every filled or stroked path or basic shape, opacity and clip-path layers,
+// painted in document order into a planar map of colour regions.
 
 #include <string>
 
-#include "fill_regions.hpp"
+#include "paint_map.hpp"
 #include "vicc_glyphs/io/svg_import.hpp"
 
 namespace vicc_glyphs {
@@ -14,7 +15,8 @@ namespace io_detail {
 struct SvgPicture {
   int width = 0;
   int height = 0;
-  PaintedScene scene{Color(1, 1, 1)};
+  IntegerFrame frame;
+  ResolvedPicture resolved;  ///< the colour regions over options.background
 };
 
 /// Parses SVG text; throws FormatError naming `source` and the offending element.

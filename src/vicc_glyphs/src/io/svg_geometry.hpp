@@ -13,6 +13,17 @@ namespace io_detail {
 /// A closed chain of K cubic Beziers, 3K+1 points, first == last.
 using Contour = std::vector<Point2>;
 
+/// One subpath as drawn: a chain of K cubic Beziers (3K+1 points). `closed` is true when the
+/// path closed it (Z, or a closed basic shape; the closing line is then part of the points);
+/// an open subpath is closed implicitly for filling but stroked with end caps.
+struct Subpath {
+  Contour points;
+  bool closed = false;
+};
+
+/// The fill contours of subpaths: open ones get their implicit closing line.
+std::vector<Contour> closedContours(std::vector<Subpath> subpaths);
+
 /// Counts control points across a whole file; throws std::length_error beyond the limit.
 class PointBudget {
  public:
@@ -33,17 +44,21 @@ class ContourBuilder {
   void moveTo(const Point2& p);
   void lineTo(const Point2& p);
   void cubicTo(const Point2& c1, const Point2& c2, const Point2& p);
-  /// Closes the current contour (also done implicitly by moveTo and finish: fills are closed).
+  /// Closes the current subpath with a line back to its start (SVG Z).
   void close();
-  /// Closes the last contour and returns all non-degenerate ones.
+  /// Ends the last subpath and returns all non-degenerate ones, closed for filling.
   std::vector<Contour> finish();
+  /// Ends the last subpath and returns all non-degenerate ones as drawn (open ones stay open).
+  std::vector<Subpath> finishSubpaths();
 
   const Point2& current() const { return current_; }
   const Point2& start() const { return start_; }
 
  private:
+  void endSubpath(bool closed);
+
   PointBudget& budget_;
-  std::vector<Contour> contours_;
+  std::vector<Subpath> subpaths_;
   Contour open_;
   Point2 start_ = Point2::Zero();
   Point2 current_ = Point2::Zero();

@@ -14,7 +14,7 @@ class PathDataParser {
  public:
   PathDataParser(const std::string& d, PointBudget& budget) : scanner_(d), builder_(budget) {}
 
-  std::vector<Contour> parse() {
+  std::vector<Subpath> parse() {
     char command = 0;
     while (!scanner_.atEnd()) {
       const char next = scanner_.peek();
@@ -33,7 +33,7 @@ class PathDataParser {
         fail("no progress parsing path");
       }
     }
-    return builder_.finish();
+    return builder_.finishSubpaths();
   }
 
  private:
@@ -139,6 +139,10 @@ class PathDataParser {
 }  // namespace
 
 std::vector<Contour> parseSvgPathData(const std::string& d, PointBudget& budget) {
+  return closedContours(PathDataParser(d, budget).parse());
+}
+
+std::vector<Subpath> parseSvgPathSubpaths(const std::string& d, PointBudget& budget) {
   return PathDataParser(d, budget).parse();
 }
 

@@ -53,7 +53,7 @@ void rect(const tinyxml2::XMLElement& e, ContourBuilder& builder) {
   builder.close();
 }
 
-void polygon(const tinyxml2::XMLElement& e, ContourBuilder& builder) {
+void polygon(const tinyxml2::XMLElement& e, ContourBuilder& builder, bool closed) {
   const char* points = e.Attribute("points");
   if (!points) throw std::invalid_argument("missing attribute points");
   const std::string text(points);
@@ -70,7 +70,12 @@ void polygon(const tinyxml2::XMLElement& e, ContourBuilder& builder) {
     first = false;
   }
   if (!scanner.atEnd()) throw std::invalid_argument("unexpected text in points");
-  builder.close();
+  if (closed) builder.close();
+}
+
+void line(const tinyxml2::XMLElement& e, ContourBuilder& builder) {
+  builder.moveTo(Point2(svgLength(e, "x1", 0.0), svgLength(e, "y1", 0.0)));
+  builder.lineTo(Point2(svgLength(e, "x2", 0.0), svgLength(e, "y2", 0.0)));
 }
 
 }  // namespace
@@ -93,10 +98,14 @@ double svgLength(const tinyxml2::XMLElement& element, const char* name, double f
 
 bool isBasicShape(const std::string& name) {
   return name == "rect" || name == "circle" || name == "ellipse" || name == "polygon" ||
-         name == "polyline";
+         name == "polyline" || name == "line";
 }
 
 std::vector<Contour> basicShapeContours(const tinyxml2::XMLElement& element, PointBudget& budget) {
+  return closedContours(basicShapeSubpaths(element, budget));
+}
+
+std::vector<Subpath> basicShapeSubpaths(const tinyxml2::XMLElement& element, PointBudget& budget) {
   ContourBuilder builder(budget);
   const std::string name = element.Name();
   if (name == "rect") {
@@ -114,11 +123,13 @@ std::vector<Contour> basicShapeContours(const tinyxml2::XMLElement& element, Poi
       ellipse(builder, svgLength(element, "cx", 0.0), svgLength(element, "cy", 0.0), rx, ry);
     }
   } else if (name == "polygon" || name == "polyline") {
-    polygon(element, builder);
+    polygon(element, builder, name == "polygon");
+  } else if (name == "line") {
+    line(element, builder);
   } else {
     throw std::invalid_argument("not a basic shape: " + name);
   }
-  return builder.finish();
+  return builder.finishSubpaths();
 }
 
 }  // namespace io_detail

@@ -1,6 +1,6 @@
 #pragma once
 // The basic SVG shapes (rect with optional rounded corners, circle, ellipse, polygon,
-// polyline) as contours, by building the equivalent path.
+// polyline, line) as contours, by building the equivalent path.
 
 #include <tinyxml2.h>
 
@@ -19,6 +19,8 @@ double svgLength(const tinyxml2::XMLElement& element, const char* name, double f
 /// Contours of a basic shape element (`path` is handled by the path data parser); an empty
 /// result for zero-sized shapes, which SVG does not render.
 std::vector<Contour> basicShapeContours(const tinyxml2::XMLElement& element, PointBudget& budget);
+/// The same as subpaths as drawn (polyline and line stay open, for stroking).
+std::vector<Subpath> basicShapeSubpaths(const tinyxml2::XMLElement& element, PointBudget& budget);
 
 /// True for the element names basicShapeContours understands.
 bool isBasicShape(const std::string& name);

@@ -1,26 +1,54 @@
 #pragma once
-// The presentation properties the importer uses, with SVG inheritance: fill (attribute or
-// style="fill:..."), fill-rule, display and visibility. Other properties are ignored.
+// The presentation properties the importer uses, with SVG inheritance and the CSS cascade
+// (presentation attributes < <style> rules < style=""): fill and stroke paints with their
+// opacities, fill-rule, the stroke geometry, color (for currentColor), display, visibility,
+// clip-rule, and the non-inherited opacity, clip-path, mask, filter and markers.
+// Properties that do not change a filled or stroked shape (fonts, ...) are ignored.
 
 #include <tinyxml2.h>
 
 #include <optional>
+#include <string>
 
-#include "fill_regions.hpp"
+#include "svg_css.hpp"
+#include "svg_stroke.hpp"
 
 namespace vicc_glyphs {
 namespace io_detail {
 
-struct SvgStyle {
-  std::optional<Color> fill = Color(0, 0, 0);  ///< nullopt: fill="none"; SVG default is black
-  FillRule rule = FillRule::kNonZero;
-  bool displayed = true;  ///< false for display:none (the subtree is skipped)
-  bool visible = true;    ///< false for visibility:hidden (inherited, can be overridden)
+struct SvgPaint {
+  enum class Kind { kNone, kColor, kCurrentColor, kReference };
+  Kind kind = Kind::kNone;
+  Color color = Color::Zero();
+  std::string reference;  ///< element id of url(#id)
 };
 
-/// The style of `element` given its parent's; style="" declarations win over attributes.
-/// Throws std::invalid_argument for values it cannot parse.
-SvgStyle cascadeStyle(const tinyxml2::XMLElement& element, const SvgStyle& parent);
+struct SvgStyle {
+  SvgPaint fill{SvgPaint::Kind::kColor, Color::Zero(), {}};  ///< SVG default: black
+  double fill_opacity = 1.0;
+  FillRule rule = FillRule::kNonZero;
+  SvgPaint stroke;  ///< SVG default: none
+  double stroke_opacity = 1.0;
+  StrokeGeometry stroke_geometry;
+  Color color = Color::Zero();  ///< the value of currentColor
+  FillRule clip_rule = FillRule::kNonZero;
+  bool displayed = true;  ///< false for display:none (the subtree is skipped)
+  bool visible = true;    ///< false for visibility:hidden (inherited, can be overridden)
+  // Not inherited:
+  double opacity = 1.0;
+  std::string clip_path;  ///< element id of clip-path: url(#id), empty for none
+  std::string mask;       ///< raw value when not none (unsupported)
+  std::string filter;     ///< raw value when not none (unsupported)
+  std::string marker;     ///< raw value of a marker property when not none (unsupported)
+};
+
+/// The style of `element` given its parent's. Throws std::invalid_argument for values it
+/// cannot parse.
+SvgStyle cascadeStyle(const tinyxml2::XMLElement& element, const SvgStyle& parent,
+                      const StyleSheet& sheet);
+
+/// The colour a paint stands for with this style's `color`; nullopt for none or a reference.
+std::optional<Color> paintColor(const SvgPaint& paint, const SvgStyle& style);
 
 }  // namespace io_detail
 }  // namespace vicc_glyphs

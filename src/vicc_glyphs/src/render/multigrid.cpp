@@ -67,25 +67,34 @@ class Multigrid {
   void solve(float* values, MultigridReport* report) {
     const int coarsest = static_cast<int>(levels_.size()) - 1;
     std::vector<double> residuals;
+    int fine_cycles = 0;
     setDirichletValues(coarsest);
     smooth(coarsest, u_[coarsest].data(), nullptr, options_.coarsest_sweeps);
     for (int l = coarsest - 1; l >= 0; --l) {
       setDirichletValues(l);
       prolong<false>(l, u_[l + 1].data(), u_[l].data());
-      const int cycles = l == 0 ? options_.fine_cycles : options_.intermediate_cycles;
-      if (l == 0 && options_.record_residuals) residuals.push_back(residualNorm(0));
+      const bool until_converged = l == 0 && options_.residual_tolerance > 0.0;
+      const bool record = l == 0 && (options_.record_residuals || until_converged);
+      const int cycles = until_converged ? options_.max_fine_cycles
+                         : l == 0        ? options_.fine_cycles
+                                         : options_.intermediate_cycles;
+      if (record) residuals.push_back(residualNorm(0));
       for (int k = 0; k < cycles; ++k) {
+        if (until_converged && residuals.back() <= options_.residual_tolerance) break;
         std::copy(u_[l].begin(), u_[l].end(), previous_.begin());
         cycled_ = l;
         vcycle(l, u_[l].data(), nullptr);
         accelerate(l, k == 0);
-        if (l == 0 && options_.record_residuals) residuals.push_back(residualNorm(0));
+        if (l == 0) ++fine_cycles;
+        if (record) residuals.push_back(residualNorm(0));
       }
     }
     if (coarsest == 0 && options_.record_residuals) residuals.push_back(residualNorm(0));
     if (report) {
       report->levels = static_cast<int>(levels_.size());
-      report->fine_cycles = coarsest == 0 ? 0 : options_.fine_cycles;
+      report->fine_cycles = fine_cycles;
+      report->converged = options_.residual_tolerance > 0.0 && coarsest > 0 &&
+                          residuals.back() <= options_.residual_tolerance;
       report->residuals = residuals;
     }
     finestValues(values);

@@ -1,5 +1,8 @@
 #include "vicc_glyphs/render/renderer.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include <chrono>
 #include <cstring>
 
@@ -107,6 +110,13 @@ void DiffusionCurveRenderer::render(const DiffusionCurveImage& input, const Rend
     result.image.release();
     result.diffused.release();
     return;
+  }
+  const double pixels = static_cast<double>(image.width) * image.height;
+  if (pixels > kMaxRenderPixels) {
+    throw std::length_error("image of " + std::to_string(image.width) + " x " +
+                            std::to_string(image.height) + " pixels: more than the limit of " +
+                            std::to_string(static_cast<long long>(kMaxRenderPixels)) +
+                            " pixels per render");
   }
   Workspace& w = *workspace_;
   const int coarsest = options.multigrid.coarsest_size;

@@ -1,5 +1,7 @@
 #include "render_command.hpp"
 
+#include <cmath>
+#include <cstdlib>
 #include <iomanip>
 
 #include "command_line.hpp"
@@ -19,6 +21,9 @@ const std::vector<OptionSpec>& renderOptions() {
       {"size", "N", "output width in pixels (default: the input's own width)"},
       {"dci", "OUT.xml", "also write the loaded (and scaled) DCI as Orzan XML"},
       {"cycles", "N", "multigrid V-cycles on the finest grid (default 2)"},
+      {"tolerance", "R", "V-cycle until the rms residual is at most R (at most 50 cycles)"},
+      {"color", "RRGGBB", "SVG: the colour of currentColor (default 000000, black)"},
+      {"lenient", "", "SVG: unsupported features become warnings and are left out"},
       {"report", "", "print timings, multigrid levels and residuals"},
       {"help", "", "show this help"},
   };
@@ -27,7 +32,8 @@ const std::vector<OptionSpec>& renderOptions() {
 
 void printUsage(std::ostream& out) {
   out << "usage: vicc_glyph render INPUT.(svg|xml|png) --out OUT.png [--size N] [--dci OUT.xml]\n"
-         "                        [--cycles N] [--report]\n\n"
+         "                        [--cycles N] [--tolerance R]\n"
+         "                        [--color RRGGBB] [--lenient] [--report]\n\n"
          "Renders a diffusion curve image (Orzan XML), an SVG icon or a PNG (traced) to PNG.\n\n"
       << formatOptions(renderOptions());
 }
@@ -40,7 +46,8 @@ void printReport(const RenderResult& result, std::ostream& out) {
       << "time ms: total " << t.total_ms << ", assemble " << t.assemble_ms << ", solve "
       << t.solve_ms << ", antialias " << t.antialias_ms << ", blur " << t.blur_ms << "\n"
       << "multigrid: " << report.multigrid.levels << " levels, " << report.multigrid.fine_cycles
-      << " V-cycles on the finest grid\n"
+      << " V-cycles on the finest grid"
+      << (report.multigrid.converged ? " (residual tolerance reached)" : "") << "\n"
       << std::scientific << std::setprecision(3);
   const std::vector<double>& residuals = report.multigrid.residuals;
   for (size_t k = 0; k < residuals.size(); ++k) {
@@ -50,6 +57,17 @@ void printReport(const RenderResult& result, std::ostream& out) {
   out << std::defaultfloat;
 }
 
+// "RRGGBB" (optionally with a leading '#') as a colour in [0, 1].
+Color parseHexColor(const std::string& text) {
+  const std::string hex = !text.empty() && text[0] == '#' ? text.substr(1) : text;
+  if (hex.size() != 6 || hex.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos) {
+    throw UsageError("--color needs RRGGBB (6 hex digits), got '" + text + "'");
+  }
+  Color color;
+  for (int i = 0; i < 3; ++i) color[i] = std::stoi(hex.substr(2 * i, 2), nullptr, 16) / 255.0;
+  return color;
+}
+
 }  // namespace
 
 int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -57,6 +75,10 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
   std::string input, output, dci;
   int size = 0;
   bool report = false;
+  SvgImportOptions svg;
+  svg.warn = [&err](const std::string& warning) {
+    err << "vicc_glyph render: warning: " << warning << "\n";
+  };
   try {
     const ParsedArguments parsed = parseArguments(args, renderOptions());
     if (parsed.has("help")) {
@@ -75,6 +97,17 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
     if (parsed.has("cycles")) {
       options.multigrid.fine_cycles = parseInteger("cycles", parsed.value("cycles"), 0, 100);
     }
+    if (parsed.has("tolerance")) {
+      const std::string text = parsed.value("tolerance");
+      char* end = nullptr;
+      const double tolerance = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0' || !(tolerance > 0.0) || !std::isfinite(tolerance)) {
+        throw UsageError("--tolerance needs a positive number, got '" + text + "'");
+      }
+      options.multigrid.residual_tolerance = tolerance;
+    }
+    if (parsed.has("color")) svg.current_color = parseHexColor(parsed.value("color"));
+    svg.lenient = parsed.has("lenient");
     dci = parsed.value("dci");
     report = parsed.has("report");
   } catch (const UsageError& e) {
@@ -85,7 +118,7 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
   options.multigrid.record_residuals = report;
 
   try {
-    const DiffusionCurveImage image = loadDiffusionCurves(input, size);
+    const DiffusionCurveImage image = loadDiffusionCurves(input, size, svg);
     if (!dci.empty()) writeOrzanXml(image, dci);
     RenderResult result;
     DiffusionCurveRenderer().render(image, options, result);

@@ -178,7 +178,8 @@ TEST(MalformedSvg, HugeCoordinatesDoNotOverflow) {
     EXPECT_TRUE(mentions(e.what(), path)) << e.what();
   }
   const DiffusionCurveImage image = parseSvg(svgWithPath("M 0 0 C 1e54 1e54 -1e54 1e54 5 5 Z"));
-  EXPECT_EQ(image.curves.size(), 1u);
+  EXPECT_FALSE(image.curves.empty());
+  EXPECT_TRUE(validate(image).empty());
 }
 
 TEST(MalformedSvg, UnsupportedPaint) {
@@ -187,7 +188,12 @@ TEST(MalformedSvg, UnsupportedPaint) {
                              "<svg viewBox='0 0 9 9'><rect width='3' height='3' "
                              "fill='url(#g)'/></svg>");
                        }),
-                       "unsupported paint"));
+                       "no element with id 'g'"));
+  EXPECT_TRUE(mentions(
+      errorOf([] {
+        parseSvg("<svg viewBox='0 0 9 9'><rect width='3' height='3' fill='hsl(0, 0%, 0%)'/></svg>");
+      }),
+      "unsupported paint"));
 }
 
 TEST(MalformedSvg, MillionControlPointsAreRejectedQuickly) {

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "sample_images.hpp"
 #include "vicc_glyphs/render/renderer.hpp"
@@ -64,6 +66,24 @@ TEST(DegenerateInputTest, TinyImagesRender) {
     EXPECT_EQ(result.image.size(), cv::Size(w, h));
     EXPECT_TRUE(cv::checkRange(result.image));
   }
+}
+
+// A thin viewBox scaled to a width, or a huge declared size, must fail before any allocation
+// (it used to grow to 5 GB and die with std::bad_alloc).
+TEST(DegenerateInputTest, TooManyPixelsAreRefusedWithTheLimit) {
+  DiffusionCurveImage tall = twoColourLineImage(1, 195);
+  RenderOptions options;
+  options.size = 512;  // 512 x 99,840
+  try {
+    renderDiffusionCurves(tall, options);
+    ADD_FAILURE() << "no error";
+  } catch (const std::length_error& e) {
+    EXPECT_NE(std::string(e.what()).find("limit of 16777216 pixels"), std::string::npos)
+        << e.what();
+  }
+  DiffusionCurveImage huge = twoColourLineImage(4, 4);
+  huge.width = huge.height = 100000;
+  EXPECT_THROW(renderDiffusionCurves(huge), std::length_error);
 }
 
 }  // namespace

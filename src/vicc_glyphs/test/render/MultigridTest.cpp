@@ -61,6 +61,24 @@ std::vector<double> residualHistory(const DiffusionCurveImage& image, int cycles
   return report.residuals;
 }
 
+TEST(MultigridTest, ResidualToleranceStopsTheCyclesAndIsReported) {
+  MultigridOptions options;
+  options.residual_tolerance = 1e-6;
+  const DiffusionCurveImage image = iconLikeImage(256, 256);
+  const Comparison converged = compareWithDirect(image, options);
+  EXPECT_TRUE(converged.report.converged);
+  const std::vector<double>& r = converged.report.residuals;
+  ASSERT_EQ(r.size(), static_cast<size_t>(converged.report.fine_cycles) + 1);
+  EXPECT_LE(r.back(), 1e-6);
+  EXPECT_GT(r[r.size() - 2], 1e-6);  // it stopped at the first cycle below the tolerance
+  EXPECT_LE(converged.mae, 1e-4);
+  // Too few cycles allowed: reported as not converged.
+  options.max_fine_cycles = 1;
+  const Comparison capped = compareWithDirect(image, options);
+  EXPECT_FALSE(capped.report.converged);
+  EXPECT_EQ(capped.report.fine_cycles, 1);
+}
+
 TEST(MultigridTest, ResidualAtLeastHalvesWithEveryVCycleForClosedCurves) {
   const std::vector<double> r = residualHistory(gradientCircleImage(256, 256), 4);
   ASSERT_EQ(r.size(), 5u);

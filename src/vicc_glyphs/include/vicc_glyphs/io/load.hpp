@@ -5,6 +5,7 @@
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
 #include "vicc_glyphs/io/format_error.hpp"
+#include "vicc_glyphs/io/svg_import.hpp"
 
 namespace vicc_glyphs {
 
@@ -12,5 +13,8 @@ namespace vicc_glyphs {
 /// width (SVG: at import; others: scaledToWidth). The result always passes validate().
 /// Throws FormatError for unknown extensions, unreadable files and invalid results.
 DiffusionCurveImage loadDiffusionCurves(const std::string& path, int size = 0);
+/// The same with the SVG import options (their `size` is replaced by `size`).
+DiffusionCurveImage loadDiffusionCurves(const std::string& path, int size,
+                                        const SvgImportOptions& svg);
 
 }  // namespace vicc_glyphs

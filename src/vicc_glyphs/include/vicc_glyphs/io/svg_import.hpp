@@ -1,10 +1,15 @@
 #pragma once
-// Imports filled SVG icons as diffusion curves: one closed curve per contour of every filled
-// shape (path, rect, circle, ellipse, polygon), with the fill colour on the inside side and the
-// background (or the colour of the enclosing fill) on the outside side. Inside is decided per
-// contour with the shape's fill rule (nonzero / evenodd) applied to the whole shape, so holes
-// get the surrounding colour on their inside.
+// Imports SVG icons as diffusion curves. The document is painted as SVG paints it (document
+// order, source-over): fills (nonzero / evenodd), strokes turned into filled outlines (width,
+// caps, joins, miter limit, dashes), currentColor, fill/stroke/group opacity blended over the
+// background, <use>, <style> rules with simple selectors, and clip-path by boolean
+// intersection. The resulting colour regions (shapes of one colour merged) give one closed
+// curve per boundary polygon, the region's colour on its left and the colour across on its
+// right. Anything else that would change the picture (text, images, masks, filters, markers,
+// gradients and patterns, ...) is a FormatError naming it, or with `lenient` a warning.
+// Details: docs/import.md.
 
+#include <functional>
 #include <string>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
@@ -12,12 +17,20 @@
 
 namespace vicc_glyphs {
 
+/// Largest image an SVG may produce (width x height in pixels at the requested size), so that
+/// a thin viewBox scaled to a width or a huge viewBox fails cleanly instead of exhausting
+/// memory in the renderer.
+constexpr double kMaxSvgPixels = 4096.0 * 4096.0;
+
 struct SvgImportOptions {
-  Color background{1, 1, 1};  ///< colour outside every shape
-  int size = 0;               ///< 0 = keep the viewBox size, else scale to this width in pixels
+  Color background{1, 1, 1};     ///< colour outside every shape
+  int size = 0;                  ///< 0 = keep the viewBox size, else scale to this width in pixels
+  Color current_color{0, 0, 0};  ///< currentColor where no `color` property sets it
+  bool lenient = false;          ///< unsupported features: warning and left out, not an error
+  std::function<void(const std::string&)> warn;  ///< receives lenient warnings (may be empty)
 };
 
-/// Reads an SVG file. Throws FormatError.
+/// Reads an SVG file. Throws FormatError, also when the picture shows nothing.
 DiffusionCurveImage importSvg(const std::string& path, const SvgImportOptions& options = {});
 /// Parses SVG text. Throws FormatError (source "<string>").
 DiffusionCurveImage parseSvg(const std::string& text, const SvgImportOptions& options = {});

@@ -25,11 +25,17 @@ struct MultigridOptions {
   int coarsest_sweeps = 100;      ///< smoothing sweeps that solve the coarsest level
   int coarsest_size = 4;          ///< coarsen until the larger grid side is at most this
   bool record_residuals = false;  ///< compute the finest level's residual after each cycle
+  /// > 0: instead of `fine_cycles`, V-cycle the finest level until its rms residual is at most
+  /// this (or `max_fine_cycles` are done); the residuals are then always recorded.
+  double residual_tolerance = 0.0;
+  int max_fine_cycles = 50;
 };
 
 struct MultigridReport {
   int levels = 0;
-  int fine_cycles = 0;
+  int fine_cycles = 0;  ///< V-cycles done on the finest level
+  /// With residual_tolerance: whether the residual reached it within max_fine_cycles.
+  bool converged = false;
   /// RMS residual over the finest level's free pixels and all channels: entry 0 after the FMG
   /// interpolation, entry k after fine V-cycle k (only with record_residuals).
   std::vector<double> residuals;

@@ -11,6 +11,10 @@
 
 namespace vicc_glyphs {
 
+/// Largest image one render may have (width x height, after RenderOptions::size): the
+/// multigrid hierarchy needs ~100-200 bytes per pixel, so 16.8 M pixels stay within ~3 GB.
+constexpr double kMaxRenderPixels = 4096.0 * 4096.0;
+
 struct RenderOptions {
   int size = 0;               ///< output width; 0 = the image's own width
   Color background{0, 0, 0};  ///< colour of regions no curve colours (see grid_problem.hpp)
@@ -50,7 +54,8 @@ class DiffusionCurveRenderer {
   DiffusionCurveRenderer& operator=(const DiffusionCurveRenderer&) = delete;
 
   /// Renders `image` (scaled to options.size if set) into `result`. An image without pixels
-  /// gives empty Mats; curves with bad point counts or no length are ignored.
+  /// gives empty Mats; curves with bad point counts or no length are ignored. Throws
+  /// std::length_error for more than kMaxRenderPixels pixels.
   void render(const DiffusionCurveImage& image, const RenderOptions& options, RenderResult& result);
 
  private:
