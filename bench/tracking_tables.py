@@ -3,11 +3,13 @@ import json
 import os
 import sys
 
-INITS = ["identity", "ekf", "constant_velocity", "imu", "ekf_imu_noise"]
+INITS = ["identity", "ekf_thesis_noise", "ekf_imu_noise", "ekf", "ekf_imu_datasheet",
+         "constant_velocity", "imu"]
 COLUMNS = INITS + ["peer"]
-LABELS = {"identity": "ICP (identity)", "ekf": "ICP+IMU (EKF)", "constant_velocity": "const. vel.",
-          "imu": "IMU only", "ekf_imu_noise": "EKF, IMU noise",
-          "peer": "OpenCV ICPOdometry"}
+LABELS = {"identity": "ICP (identity)", "ekf_thesis_noise": "EKF, thesis noise",
+          "ekf_imu_noise": "EKF, hand-tuned fixed R", "ekf": "ICP+IMU (EKF, default)",
+          "ekf_imu_datasheet": "EKF, Q from imu.yaml", "constant_velocity": "const. vel.",
+          "imu": "IMU only", "peer": "OpenCV ICPOdometry"}
 STEPS = [(1, "All"), (2, "1/2"), (4, "1/4")]
 LEVELS = [3, 2, 1]
 MAX_POSITION, MAX_ROTATION = 0.15, 10.0  # thesis: larger drift is shown in parentheses
@@ -45,7 +47,11 @@ def main():
     print("Made by `make bench` (`bench/run_tracking_bench.sh`). Drift = difference between the "
           "first and the last tracked pose of a closed loop; ∅ = ICP failed on at least one "
           "frame (count in the Failures row); parentheses = drift above 0.15 m / 10°, as in the "
-          "thesis. The peer is OpenCV's cv::rgbd::ICPOdometry (contrib rgbd module) with identity "
+          "thesis. EKF columns (files in `src/vicc_tracking/config/`): the thesis's noise values, "
+          "one fixed R (`tracker_thesis.yaml`); the hand-tuned IMU-derived values with one "
+          "fixed R (`tracker_imu_trusting.yaml`); the default (`tracker.yaml`: the same Q, R "
+          "scaled with the frame interval as T^3); the default with Q derived from the IMU's "
+          "figures in Kalibr's layout (`--imu-noise imu/simulated_rig.yaml`). The peer is OpenCV's cv::rgbd::ICPOdometry (contrib rgbd module) with identity "
           "initialisation on the same undistorted frames; it reports no iteration counts.\n")
     for scenario in scenarios:
         print(f"## {scenario}\n")

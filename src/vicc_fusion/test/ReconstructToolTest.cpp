@@ -151,11 +151,45 @@ TEST(ReconstructToolTest, ConfigFilesOfThePackageLoad) {
   EXPECT_EQ(vicc_tracking::toYaml(defaults), vicc_tracking::toYaml({}));
   ReconstructOptions options;
   EXPECT_TRUE(parse({"a.bag", "--config", (directory + "/tracker.yaml").c_str()}, options));
+  // The thesis's noise values (5.4.4) are a named file, no longer the defaults.
   options = ReconstructOptions{};
-  EXPECT_TRUE(parse({"a.bag", "--config", (directory + "/tracker_imu_trusting.yaml").c_str()},
-                    options));
-  EXPECT_NE(options.tracker.ekf.measurement_noise_position,
-            vicc_tracking::EkfConfig{}.measurement_noise_position);
+  EXPECT_TRUE(parse({"a.bag", "--config", (directory + "/tracker_thesis.yaml").c_str()}, options));
+  const vicc_tracking::EkfConfig& thesis = options.tracker.ekf;
+  EXPECT_EQ(thesis.process_noise_rotation, 1e-5);
+  EXPECT_EQ(thesis.process_noise_velocity, 1e-2);
+  EXPECT_EQ(thesis.process_noise_position, 1e-1);
+  EXPECT_EQ(thesis.process_noise_base, 1e-5);
+  EXPECT_EQ(thesis.measurement_noise_rotation, 1e-3);
+  EXPECT_EQ(thesis.measurement_noise_velocity, 1e-6);
+  EXPECT_EQ(thesis.measurement_noise_position, 1e-5);
+  EXPECT_EQ(thesis.measurement_noise_base, 1e-13);
+  EXPECT_EQ(thesis.initial_covariance, 1e-4);
+  EXPECT_EQ(thesis.measurement_noise_interval_exponent, 0.0);  // one fixed R
+  // The defaults are the IMU-derived values of tracker.yaml.
+  const vicc_tracking::EkfConfig& ekf_defaults = defaults.tracker.ekf;
+  EXPECT_EQ(ekf_defaults.process_noise_velocity, 1e-5);
+  EXPECT_EQ(ekf_defaults.measurement_noise_position, 2.5e-3);
+  EXPECT_EQ(ekf_defaults.initial_covariance, 1e-7);
+  EXPECT_EQ(ekf_defaults.measurement_noise_interval_exponent, 3.0);
+  EXPECT_EQ(ekf_defaults.imu_noise_file, "");
+}
+
+TEST(ReconstructToolTest, ImuNoiseFileDerivesTheProcessNoise) {
+  const std::string file = std::string(VICC_TRACKER_CONFIG_DIR) + "/imu/bosch_bmi270.yaml";
+  ReconstructOptions options;
+  ASSERT_TRUE(parse({"a.bag", "--imu-noise", file.c_str()}, options));
+  EXPECT_EQ(options.tracker.ekf.imu_noise_file, file);
+  const vicc_tracking::EkfConfig defaults;
+  EXPECT_NE(options.tracker.ekf.process_noise_velocity, defaults.process_noise_velocity);
+  EXPECT_NE(options.tracker.ekf.process_noise_rotation, defaults.process_noise_rotation);
+  EXPECT_EQ(options.tracker.ekf.measurement_noise_velocity, defaults.measurement_noise_velocity);
+  const nlohmann::json json =
+      makeReport(options, ReconstructRun{}, vicc_tracking::TrackingStatistics{});
+  EXPECT_EQ(json["tracker_parameters"]["ekf"]["imu_noise_file"], file);
+  options = ReconstructOptions{};
+  EXPECT_THROW(parse({"a.bag", "--imu-noise", "/nonexistent/imu.yaml"}, options),
+               std::invalid_argument);
+  EXPECT_THROW(parse({"a.bag", "--imu-noise"}, options), std::invalid_argument);
 }
 
 TEST(ReconstructToolTest, ConfigFileRejectsUnknownKeysNamingThem) {

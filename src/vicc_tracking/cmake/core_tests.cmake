@@ -5,7 +5,11 @@ if(CATKIN_ENABLE_TESTING)
     test/core/EkfTest.cpp
     test/core/InitStrategyTest.cpp
     test/core/IcpTest.cpp
-    test/core/DepthPreprocessingTest.cpp)
+    test/core/DepthPreprocessingTest.cpp
+    test/core/CameraModelTest.cpp
+    test/core/ImuNoiseTest.cpp)
   target_compile_options(vicc_tracking_core_test PRIVATE ${VICC_WARNINGS})
+  target_compile_definitions(vicc_tracking_core_test PRIVATE
+    VICC_TRACKING_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")
   target_link_libraries(vicc_tracking_core_test vicc_tracking_core vicc_tracking_sim gtest_main)
 endif()

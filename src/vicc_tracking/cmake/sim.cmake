@@ -5,6 +5,7 @@ add_library(vicc_tracking_sim
   src/sim/scene.cpp
   src/sim/trajectory.cpp
   src/sim/visible_surface.cpp
+  src/sim/extrapolation_error.cpp
 )
 target_compile_options(vicc_tracking_sim PRIVATE ${VICC_WARNINGS})
 target_compile_definitions(vicc_tracking_sim PRIVATE
@@ -18,7 +19,13 @@ if(CATKIN_ENABLE_TESTING)
     test/sim/RigSimulatorTest.cpp
     test/sim/ScenarioTest.cpp
     test/sim/VisibleSurfaceTest.cpp
-    test/sim/TrackerTest.cpp)
+    test/sim/TrackerTest.cpp
+    test/sim/ExtrapolationErrorTest.cpp)
   target_compile_options(vicc_tracking_sim_test PRIVATE ${VICC_WARNINGS})
   target_link_libraries(vicc_tracking_sim_test vicc_tracking_sim gtest_main)
 endif()
+
+# R against the frame interval on the scenarios (docs/imu_noise.md).
+add_executable(vicc_extrapolation_error src/tools/vicc_extrapolation_error.cpp)
+target_compile_options(vicc_extrapolation_error PRIVATE ${VICC_WARNINGS})
+target_link_libraries(vicc_extrapolation_error vicc_tracking_sim)

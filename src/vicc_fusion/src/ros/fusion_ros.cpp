@@ -117,8 +117,7 @@ void FusionRos::onTrackedFrame(vicc_tracking::Tracker& tracker,
 void FusionRos::onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info) {
   try {
     const vicc_tracking::CameraModel camera = vicc_tracking::cameraModelFromInfo(*info);
-    if (!camera_ || camera_->width != camera.width || camera_->height != camera.height ||
-        camera_->fx != camera.fx || camera_->distortion != camera.distortion) {
+    if (!camera_ || *camera_ != camera) {
       preprocessor_->setCamera(camera);
       camera_ = camera;
     }

@@ -27,7 +27,7 @@ void printReconstructUsage(std::ostream& out) {
          "                        [--frame-step N] [--trajectory OUT.tum] [--cloud OUT.ply]\n"
          "                        [--mesh OUT.ply] [--report OUT.json] [--gt TRUTH.tum]\n"
          "                        [--truth-surface SURFACE.ply] [--frame-to-frame | --no-fusion]\n"
-         "                        [--config TRACKER.yaml] [--quiet]\n"
+         "                        [--config TRACKER.yaml] [--imu-noise IMU.yaml] [--quiet]\n"
          "Tracks the depth camera through a depth + IMU recording (thesis 5.4) and fuses the\n"
          "frames into a surfel model it tracks against (frame-to-model, thesis 2.2.2, 5.3).\n"
          "  topics       default to the only Image / CameraInfo / Imu topic in the bag\n"
@@ -41,6 +41,9 @@ void printReconstructUsage(std::ostream& out) {
          "               init_strategy, preprocessing, icp, ekf, still_phase, imu_sync); keys\n"
          "               left out keep their defaults, unknown keys and wrong types are errors,\n"
          "               the node-only keys (map_frame, publish_tf, ...) are accepted, unused\n"
+         "  --imu-noise  the IMU's noise figures in Kalibr's imu.yaml layout (noise densities,\n"
+         "               random walks, update_rate): the EKF's process noise is derived from\n"
+         "               them (vicc_tracking docs/imu_noise.md); overrides ekf/imu_noise_file\n"
          "  --frame-step process every N-th depth frame (thesis: All = 1, 1/2 = 2, 1/4 = 4)\n"
          "  --trajectory camera optical frame in map, TUM format, one line per tracked frame\n"
          "  --cloud      the stable surfels in map: binary PLY with normals, radius, confidence\n"
@@ -61,6 +64,7 @@ bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptio
                              std::ostream& out) {
   std::optional<vicc_tracking::InitStrategyType> init;
   std::optional<int> levels;
+  std::optional<std::string> imu_noise;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -88,6 +92,8 @@ bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptio
       if (*levels > 3) throw std::invalid_argument("--levels must be 1, 2 or 3");
     } else if (arg == "--config") {
       options.config_path = value();
+    } else if (arg == "--imu-noise") {
+      imu_noise = value();
     } else if (arg == "--frame-step") {
       options.frame_step = parsePositiveInt(arg, value());
     } else if (arg == "--trajectory") {
@@ -123,6 +129,10 @@ bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptio
                         : vicc_tracking::loadTrackerParameters(options.config_path).tracker;
   if (init) options.tracker.init_strategy = *init;
   if (levels) options.tracker.preprocessing.pyramid_levels = *levels;
+  if (imu_noise) {
+    options.tracker.ekf.imu_noise_file = *imu_noise;
+    vicc_tracking::applyImuNoiseFile(options.tracker);
+  }
   options.init = options.tracker.init_strategy;
   options.levels = options.tracker.preprocessing.pyramid_levels;
   if (!options.fusion && (!options.cloud_path.empty() || !options.mesh_path.empty() ||

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include "reconstruct_options.hpp"
 #include "reconstruct_report.hpp"
@@ -181,14 +182,12 @@ class Reconstruction {
       return;
     }
     if (info != last_info_) {
-      const bool changed = !last_info_ || info->K != last_info_->K || info->D != last_info_->D ||
-                           info->width != last_info_->width || info->height != last_info_->height ||
-                           info->distortion_model != last_info_->distortion_model;
       try {
-        if (changed) {
-          const vicc_tracking::CameraModel camera = vicc_tracking::cameraModelFromInfo(*info);
+        const vicc_tracking::CameraModel camera = vicc_tracking::cameraModelFromInfo(*info);
+        if (!camera_ || *camera_ != camera) {  // the one calibration test of every node
           tracker_->setCamera(camera);
           gray_preprocessor_.setCamera(camera);
+          camera_ = camera;
         }
         last_info_ = info;
       } catch (const std::exception& error) {
@@ -272,6 +271,7 @@ class Reconstruction {
   std::vector<vicc_tracking::TimedPose> trajectory_;
   vicc_fusion::ReconstructRun run_;
   sensor_msgs::CameraInfoConstPtr last_info_;
+  std::optional<vicc_tracking::CameraModel> camera_;  ///< the calibration in use
   size_t depth_index_ = 0;
   size_t next_imu_ = 0;
   int warnings_ = 0;

@@ -42,4 +42,10 @@ struct CameraModel {
   std::vector<Eigen::Vector2d> normalizedRaysForAllPixels() const;
 };
 
+/// Same calibration: every field (size, fx, fy, cx, cy, distortion model and coefficients)
+/// equal. The one test of "the camera changed" used by the tracker, the fusion node and the
+/// offline tools, so a recalibration of any one value is never missed.
+bool operator==(const CameraModel& a, const CameraModel& b);
+inline bool operator!=(const CameraModel& a, const CameraModel& b) { return !(a == b); }
+
 }  // namespace vicc_tracking

@@ -23,6 +23,16 @@ TrackerParameterSet parseTrackerParameters(const std::string& yaml_text,
 /// Reads a file with parseTrackerParameters(); the messages name the file.
 TrackerParameterSet loadTrackerParameters(const std::string& path);
 
+/// Kalibr's imu.yaml layout (top-level keys of the ImuNoise table in tracker_parameters.hpp).
+/// Throws std::invalid_argument "<source>: <key>: <problem>" for invalid YAML, an unknown key,
+/// a wrong type or a missing/invalid figure.
+ImuNoise parseImuNoise(const std::string& yaml_text, const std::string& source = "IMU noise");
+ImuNoise loadImuNoise(const std::string& path);
+
+/// If config.ekf.imu_noise_file is set: Q derived from that file (ekfNoiseFromImu). Both the
+/// YAML and the ROS parameter readers call it; errors name the file.
+void applyImuNoiseFile(TrackerConfig& config);
+
 /// YAML in the same layout with every parameter; parseTrackerParameters() reads it back.
 std::string toYaml(const TrackerParameterSet& parameters);
 

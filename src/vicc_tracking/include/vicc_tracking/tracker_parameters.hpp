@@ -14,6 +14,7 @@
 #include <string>
 #include <type_traits>
 
+#include "vicc_tracking/imu_noise.hpp"
 #include "vicc_tracking/tracker.hpp"
 
 namespace vicc_tracking {
@@ -77,7 +78,22 @@ EnableForConfig<Config, EkfConfig> visitParameters(Config& config, Visitor& visi
   visit("measurement_noise_position", config.measurement_noise_position);
   visit("measurement_noise_base", config.measurement_noise_base);
   visit("initial_covariance", config.initial_covariance);
+  visit("measurement_noise_reference_interval", config.measurement_noise_reference_interval);
+  visit("measurement_noise_interval_exponent", config.measurement_noise_interval_exponent);
   visit("imu_aided_virtual_velocity", config.imu_aided_virtual_velocity);
+  visit("imu_noise_file", config.imu_noise_file);
+}
+
+/// The keys of Kalibr's imu.yaml (and of the VIO tools that read it), plus one extension.
+template <typename Config, typename Visitor>
+EnableForConfig<Config, ImuNoise> visitParameters(Config& config, Visitor& visit) {
+  visit("accelerometer_noise_density", config.accelerometer_noise_density);
+  visit("accelerometer_random_walk", config.accelerometer_random_walk);
+  visit("gyroscope_noise_density", config.gyroscope_noise_density);
+  visit("gyroscope_random_walk", config.gyroscope_random_walk);
+  visit("update_rate", config.update_rate);
+  visit("rostopic", config.rostopic);
+  visit("accelerometer_turn_on_bias", config.accelerometer_turn_on_bias);
 }
 
 template <typename Config, typename Visitor>

@@ -142,4 +142,9 @@ std::vector<Eigen::Vector2d> CameraModel::normalizedRaysForAllPixels() const {
   return rays;
 }
 
+bool operator==(const CameraModel& a, const CameraModel& b) {
+  return a.width == b.width && a.height == b.height && a.fx == b.fx && a.fy == b.fy &&
+         a.cx == b.cx && a.cy == b.cy && a.model == b.model && a.distortion == b.distortion;
+}
+
 }  // namespace vicc_tracking

@@ -234,11 +234,7 @@ DepthPreprocessor::DepthPreprocessor(const PreprocessingConfig& config) : config
 
 void DepthPreprocessor::setCamera(const CameraModel& camera) {
   camera.validate();
-  const bool same = has_camera_ && camera.width == camera_.width &&
-                    camera.height == camera_.height && camera.fx == camera_.fx &&
-                    camera.fy == camera_.fy && camera.cx == camera_.cx && camera.cy == camera_.cy &&
-                    camera.model == camera_.model && camera.distortion == camera_.distortion;
-  if (same) return;
+  if (has_camera_ && camera == camera_) return;
   camera_ = camera;
   has_camera_ = true;
   undistort_map1_.release();

@@ -1,5 +1,6 @@
 #include "vicc_tracking/ekf.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -32,6 +33,13 @@ void EkfConfig::validate() const {
                                   "finite and > 0");
     }
   }
+  if (!(measurement_noise_reference_interval > 0.0) ||
+      !std::isfinite(measurement_noise_reference_interval)) {
+    throw std::invalid_argument("ekf: measurement_noise_reference_interval must be finite and > 0");
+  }
+  if (!(measurement_noise_interval_exponent >= 0.0 && measurement_noise_interval_exponent <= 8.0)) {
+    throw std::invalid_argument("ekf: measurement_noise_interval_exponent must be in [0, 8]");
+  }
 }
 
 Vector14d EkfState::toVector() const {
@@ -55,9 +63,6 @@ InitializationEkf::InitializationEkf(const EkfConfig& config, const ImuCalibrati
   config_.validate();
   process_noise_ = blockDiagonal(config_.process_noise_rotation, config_.process_noise_velocity,
                                  config_.process_noise_position, config_.process_noise_base);
-  measurement_noise_ =
-      blockDiagonal(config_.measurement_noise_rotation, config_.measurement_noise_velocity,
-                    config_.measurement_noise_position, config_.measurement_noise_base);
   start(identityQuat());
 }
 
@@ -101,14 +106,27 @@ void InitializationEkf::predict(const ImuStep& step) {
   covariance_ = jacobian * covariance_ * jacobian.transpose() + process_noise_;
 }
 
-void InitializationEkf::correct(const Vector14d& measurement) {
+Matrix14d InitializationEkf::measurementNoise(double interval_dt) const {
+  // The extrapolation error grows as a power of the interval (docs/imu_noise.md). A zero or
+  // negative interval (never passed by the tracker, which rejects such stamps) counts as the
+  // shortest one so that R stays positive.
+  constexpr double kShortestInterval = 1e-4;
+  const double ratio =
+      std::max(interval_dt, kShortestInterval) / config_.measurement_noise_reference_interval;
+  const double scale = std::pow(ratio, config_.measurement_noise_interval_exponent);
+  return blockDiagonal(scale * config_.measurement_noise_rotation,
+                       scale * config_.measurement_noise_velocity,
+                       scale * config_.measurement_noise_position, config_.measurement_noise_base);
+}
+
+void InitializationEkf::correct(const Vector14d& measurement, double interval_dt) {
   Vector14d z = measurement;
   // q and -q are the same rotation: compare like with like.
   z.segment<4>(kQ) = alignedTo(z.segment<4>(kQ), state_.q);
   z.segment<4>(kQb) = alignedTo(z.segment<4>(kQb), state_.q_b);
 
   // Eq. 5.20: with h(x) = x the gain is K = P (P + R)^-1.
-  const Matrix14d innovation_covariance = covariance_ + measurement_noise_;
+  const Matrix14d innovation_covariance = covariance_ + measurementNoise(interval_dt);
   const Matrix14d gain =
       innovation_covariance.ldlt().solve(covariance_.transpose()).transpose();
   const Vector14d x = state_.toVector();

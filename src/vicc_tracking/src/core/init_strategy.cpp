@@ -149,7 +149,8 @@ class EkfInit : public InitStrategy {
     } else {
       velocities_.clear();
     }
-    ekf_.correct(virtualMeasurement(history_, stamp - previous.stamp, velocities_));
+    const double interval = stamp - previous.stamp;
+    ekf_.correct(virtualMeasurement(history_, interval, velocities_), interval);
     previous_steps_ = steps;
     previous_interval_end_ = stamp;
     const EkfState& state = ekf_.state();

@@ -144,16 +144,27 @@ class YamlWriter {
   YAML::Emitter& out_;
 };
 
+YAML::Node loadYaml(const std::string& text, const std::string& source) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& error) {
+    throw std::invalid_argument(source + ": not valid YAML: " + error.what());
+  }
+}
+
+std::string readFile(const std::string& path, const std::string& what) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument("cannot read the " + what + " " + path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 }  // namespace
 
 TrackerParameterSet parseTrackerParameters(const std::string& yaml_text,
                                            const std::string& source) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::Exception& error) {
-    throw std::invalid_argument(source + ": not valid YAML: " + error.what());
-  }
+  const YAML::Node root = loadYaml(yaml_text, source);
   TrackerParameterSet parameters;
   if (root.IsNull()) return parameters;  // empty file: all defaults
   if (!root.IsMap()) throw std::invalid_argument(source + ": expected a map of parameters");
@@ -167,15 +178,41 @@ TrackerParameterSet parseTrackerParameters(const std::string& yaml_text,
   } catch (const std::exception& error) {
     throw std::invalid_argument(source + ": " + error.what());
   }
+  applyImuNoiseFile(parameters.tracker);
   return parameters;
 }
 
 TrackerParameterSet loadTrackerParameters(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("cannot read the parameter file " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseTrackerParameters(text.str(), path);
+  return parseTrackerParameters(readFile(path, "parameter file"), path);
+}
+
+ImuNoise parseImuNoise(const std::string& yaml_text, const std::string& source) {
+  const YAML::Node root = loadYaml(yaml_text, source);
+  if (!root.IsMap()) throw std::invalid_argument(source + ": expected a map of IMU noise figures");
+  ImuNoise noise;
+  YamlReader reader(root, "", source);
+  visitParameters(noise, reader);
+  reader.rejectUnknownKeys();
+  try {
+    noise.validate();
+  } catch (const std::exception& error) {
+    throw std::invalid_argument(source + ": " + error.what());
+  }
+  return noise;
+}
+
+ImuNoise loadImuNoise(const std::string& path) {
+  return parseImuNoise(readFile(path, "IMU noise file"), path);
+}
+
+void applyImuNoiseFile(TrackerConfig& config) {
+  if (config.ekf.imu_noise_file.empty()) return;
+  const ImuNoise noise = loadImuNoise(config.ekf.imu_noise_file);
+  try {
+    config.ekf = ekfNoiseFromImu(config.ekf, noise, config.still_phase.duration);
+  } catch (const std::exception& error) {
+    throw std::invalid_argument(config.ekf.imu_noise_file + ": " + error.what());
+  }
 }
 
 std::string toYaml(const TrackerParameterSet& parameters) {

@@ -1,5 +1,7 @@
 #include "vicc_tracking/ros/parameters.hpp"
 
+#include "vicc_tracking/tracker_config_yaml.hpp"
+
 #include <stdexcept>
 
 namespace vicc_tracking {
@@ -54,6 +56,7 @@ TrackerConfig readTrackerConfig(const ros::NodeHandle& private_nh) {
   RosParameterReader reader(private_nh);
   visitParameters(config, reader);
   validateSection(private_nh, config);
+  applyImuNoiseFile(config);  // ~ekf/imu_noise_file: Q from the IMU's datasheet figures
   return config;
 }
 

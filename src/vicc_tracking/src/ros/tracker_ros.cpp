@@ -35,12 +35,7 @@ TrackerRos::TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
 void TrackerRos::onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info) {
   try {
     const CameraModel camera = cameraModelFromInfo(*info);
-    const bool changed = !camera_ || camera_->width != camera.width ||
-                         camera_->height != camera.height || camera_->fx != camera.fx ||
-                         camera_->fy != camera.fy || camera_->cx != camera.cx ||
-                         camera_->cy != camera.cy || camera_->distortion != camera.distortion ||
-                         camera_->model != camera.model;
-    if (!changed) return;
+    if (camera_ && *camera_ == camera) return;
     if (camera_) ROS_WARN("tracker: camera_info changed; using the new calibration");
     camera_ = camera;
     if (tracker_) tracker_->setCamera(camera);

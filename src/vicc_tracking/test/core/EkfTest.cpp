@@ -36,10 +36,29 @@ struct AnalyticMotion {
 Quat4 toQuat(const Eigen::Quaterniond& q) { return Quat4(q.w(), q.x(), q.y(), q.z()); }
 Eigen::Quaterniond fromQuat(const Quat4& q) { return Eigen::Quaterniond(q[0], q[1], q[2], q[3]); }
 
-InitializationEkf makeEkf() {
-  ImuCalibration calibration;  // no bias; at rest the IMU reads +g in the map
-  return InitializationEkf(EkfConfig{}, calibration, -kGravityMap);
+/// The thesis's values (config/tracker_thesis.yaml): R far below P, so a correction lands
+/// (almost) on the measurement, which the mechanics tests below use.
+EkfConfig thesisNoise() {
+  EkfConfig config;
+  config.process_noise_rotation = 1e-5;
+  config.process_noise_velocity = 1e-2;
+  config.process_noise_position = 1e-1;
+  config.process_noise_base = 1e-5;
+  config.measurement_noise_rotation = 1e-3;
+  config.measurement_noise_velocity = 1e-6;
+  config.measurement_noise_position = 1e-5;
+  config.measurement_noise_base = 1e-13;
+  config.initial_covariance = 1e-4;
+  config.measurement_noise_interval_exponent = 0.0;
+  return config;
 }
+
+InitializationEkf makeEkf(const EkfConfig& config = thesisNoise()) {
+  ImuCalibration calibration;  // no bias; at rest the IMU reads +g in the map
+  return InitializationEkf(config, calibration, -kGravityMap);
+}
+
+constexpr double kInterval = 4.0 / 15.0;  // every 4th frame at 15 Hz
 
 TEST(EkfTest, NoiseFreePredictionReproducesTheTrueRelativePose) {
   const AnalyticMotion motion;
@@ -73,7 +92,7 @@ TEST(EkfTest, ProcessJacobianMatchesNumericalDerivativeForVelocityAndPosition) {
   shifted(kV) += h;
   // A copy with a shifted velocity predicts a shifted position: the finite difference.
   InitializationEkf probe = ekf;
-  probe.correct(shifted);  // R_v = 1e-6 << P: the correction lands (almost) on the shift
+  probe.correct(shifted, kInterval);  // R_v = 1e-6 << P: the correction lands (almost) on the shift
   const double applied = probe.state().v.x() - before.v.x();
   moved.predict(step);
   probe.predict(step);
@@ -100,7 +119,7 @@ TEST(EkfTest, CorrectPullsTowardsTheMeasurementAndShrinksCovariance) {
   const double trace_before = ekf.covariance().trace();
   Vector14d measurement = ekf.state().toVector();
   measurement.segment<3>(4) = Eigen::Vector3d(0.2, 0.0, 0.0);  // a velocity the ICP poses show
-  ekf.correct(measurement);
+  ekf.correct(measurement, kInterval);
   EXPECT_GT(ekf.state().v.x(), 0.19);  // R_v = 1e-6 is far below P: trust the measurement
   EXPECT_LT(ekf.covariance().trace(), trace_before);
 }
@@ -114,7 +133,7 @@ TEST(EkfTest, ResetKeepsCovarianceSymmetricPositiveDefinite) {
     for (int k = 0; k < 13; ++k) ekf.predict(motion.reading((cycle * 13 + k) * dt, dt));
     Vector14d measurement = ekf.state().toVector();
     measurement.segment<3>(4) += Eigen::Vector3d(0.01, -0.02, 0.005) * std::sin(cycle);
-    ekf.correct(measurement);
+    ekf.correct(measurement, 13.0 / 200.0);
     ekf.reset(ekf.state().q_b);
     const Matrix14d& p = ekf.covariance();
     ASSERT_TRUE(p.allFinite());
@@ -123,12 +142,63 @@ TEST(EkfTest, ResetKeepsCovarianceSymmetricPositiveDefinite) {
   }
 }
 
+TEST(EkfTest, MeasurementNoiseScalesWithAPowerOfTheInterval) {
+  const EkfConfig config;  // the defaults: R at 4/15 s, exponent 3
+  ASSERT_DOUBLE_EQ(config.measurement_noise_reference_interval, kInterval);
+  ASSERT_DOUBLE_EQ(config.measurement_noise_interval_exponent, 3.0);
+  const InitializationEkf ekf = makeEkf(config);
+  const Matrix14d at_reference = ekf.measurementNoise(kInterval);
+  EXPECT_DOUBLE_EQ(at_reference(0, 0), config.measurement_noise_rotation);
+  EXPECT_DOUBLE_EQ(at_reference(4, 4), config.measurement_noise_velocity);
+  EXPECT_DOUBLE_EQ(at_reference(7, 7), config.measurement_noise_position);
+  EXPECT_DOUBLE_EQ(at_reference(10, 10), config.measurement_noise_base);
+  // Every frame (1/15 s) is a quarter of the interval: R / 4^3 for the extrapolated parts,
+  // the ICP orientation q_b unchanged.
+  const Matrix14d every_frame = ekf.measurementNoise(kInterval / 4.0);
+  for (int i = 0; i < 10; ++i) {
+    EXPECT_NEAR(every_frame(i, i) / at_reference(i, i), 1.0 / 64.0, 1e-12) << i;
+  }
+  for (int i = 10; i < 14; ++i) EXPECT_EQ(every_frame(i, i), at_reference(i, i)) << i;
+  EXPECT_GT(ekf.measurementNoise(0.0).diagonal().minCoeff(), 0.0);  // stays positive
+
+  EkfConfig fixed = config;
+  fixed.measurement_noise_interval_exponent = 0.0;  // the thesis: one R
+  EXPECT_EQ(makeEkf(fixed).measurementNoise(kInterval / 4.0), at_reference);
+}
+
+TEST(EkfTest, ShorterIntervalsTrustTheExtrapolationMore) {
+  const EkfConfig config;
+  double pulled[2];
+  const double intervals[2] = {kInterval / 4.0, kInterval};
+  for (int i = 0; i < 2; ++i) {
+    InitializationEkf ekf = makeEkf(config);
+    ekf.start(identityQuat());
+    ImuStep rest;
+    rest.linear_acceleration = -kGravityMap;
+    rest.dt = 0.005;
+    for (int k = 0; k < 13; ++k) ekf.predict(rest);
+    Vector14d measurement = ekf.state().toVector();
+    measurement.segment<3>(7) = Eigen::Vector3d(0.01, 0.0, 0.0);
+    ekf.correct(measurement, intervals[i]);
+    pulled[i] = ekf.state().p.x() / 0.01;
+  }
+  EXPECT_GT(pulled[0], pulled[1]);
+  EXPECT_GT(pulled[0], 0.0);
+  EXPECT_LT(pulled[1], 1.0);
+}
+
 TEST(EkfTest, RejectsInvalidNoise) {
   EkfConfig config;
   config.process_noise_velocity = 0.0;
   EXPECT_THROW(config.validate(), std::invalid_argument);
   config = EkfConfig{};
   config.initial_covariance = std::nan("");
+  EXPECT_THROW(config.validate(), std::invalid_argument);
+  config = EkfConfig{};
+  config.measurement_noise_reference_interval = 0.0;
+  EXPECT_THROW(config.validate(), std::invalid_argument);
+  config = EkfConfig{};
+  config.measurement_noise_interval_exponent = -1.0;
   EXPECT_THROW(config.validate(), std::invalid_argument);
 }
 
