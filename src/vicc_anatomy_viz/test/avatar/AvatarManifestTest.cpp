@@ -96,6 +96,21 @@ TEST(AvatarManifestTest, MisspeltKeysAndBadShapesAreRejected) {
             std::string::npos);
 }
 
+TEST(AvatarManifestTest, NonFiniteNumbersAreRejected) {
+  // The YAML reader refuses .nan and .inf; the manifest also what overflows to infinity.
+  for (const std::string value : {".nan", ".inf", "-.inf", "1e999"}) {
+    const std::string message =
+        errorOf(manifestWith(kHumanZae,
+                             "  - {id: soleus, sides: [left], region: r, system: s,\n"
+                             "     generated: {bone: shank, azimuth: " +
+                                 value + "}}\n"));
+    EXPECT_NE(message.find("structures[0].generated.azimuth"), std::string::npos) << message;
+    EXPECT_TRUE(message.find("not a number") != std::string::npos ||
+                message.find("must be a finite number") != std::string::npos)
+        << message;
+  }
+}
+
 TEST(AvatarManifestTest, SkinAxesMustBeTwoDifferentSignedAxes) {
   MeshSource source;
   source.path = kHumanZae;
