@@ -44,6 +44,7 @@ include(cmake/fuzz_regression.cmake)
 catkin_add_gtest(vicc_anatomy_viz_avatar_test
   test/avatar/AvatarManifestTest.cpp
   test/avatar/AvatarModelTest.cpp
+  test/avatar/AvatarReportTest.cpp
   test/avatar/DermatomeLabellingTest.cpp)
 target_compile_options(vicc_anatomy_viz_avatar_test PRIVATE ${VICC_WARNINGS})
 target_compile_definitions(vicc_anatomy_viz_avatar_test PRIVATE ${VICC_TEST_DEFINITIONS})

@@ -1,5 +1,6 @@
 #include "vicc_anatomy_viz/avatar/avatar_manifest.hpp"
 
+#include <cmath>
 #include <filesystem>
 
 #include "../core/yaml_reading.hpp"
@@ -11,8 +12,11 @@ namespace {
 
 using yaml_reading::Cursor;
 
+/// A finite number (NaN or infinity would silently become a broken mesh).
 float number(const Cursor& cursor, const std::string& key, float fallback) {
-  return static_cast<float>(cursor.number(key, fallback));
+  const double value = cursor.number(key, fallback);
+  if (!std::isfinite(value)) cursor.child(key).fail(key + " must be a finite number");
+  return static_cast<float>(value);
 }
 
 MeshSource readMeshSource(const Cursor& item, const std::filesystem::path& directory) {
@@ -27,7 +31,11 @@ MeshSource readMeshSource(const Cursor& item, const std::filesystem::path& direc
   if (item.has("translation")) {
     const std::vector<Cursor> values = item.child("translation").items();
     if (values.size() != 3) item.child("translation").fail("translation needs three numbers");
-    for (int k = 0; k < 3; ++k) source.translation[k] = static_cast<float>(values[k].asDouble());
+    for (int k = 0; k < 3; ++k) {
+      const double value = values[k].asDouble();
+      if (!std::isfinite(value)) values[k].fail("translation must be finite numbers");
+      source.translation[k] = static_cast<float>(value);
+    }
   }
   return source;
 }

@@ -3,6 +3,7 @@
 
 #include "avatar_test_support.hpp"
 #include "vicc_anatomy_viz/avatar/avatar_manifest.hpp"
+#include "vicc_anatomy_viz/avatar/mesh_geometry.hpp"
 #include "vicc_anatomy_viz/avatar/skin_mesh_loader.hpp"
 #include "vicc_anatomy_viz/errors.hpp"
 
@@ -95,6 +96,21 @@ TEST(AvatarManifestTest, MisspeltKeysAndBadShapesAreRejected) {
             std::string::npos);
 }
 
+TEST(AvatarManifestTest, NonFiniteNumbersAreRejected) {
+  // The YAML reader refuses .nan and .inf; the manifest also what overflows to infinity.
+  for (const std::string value : {".nan", ".inf", "-.inf", "1e999"}) {
+    const std::string message =
+        errorOf(manifestWith(kHumanZae,
+                             "  - {id: soleus, sides: [left], region: r, system: s,\n"
+                             "     generated: {bone: shank, azimuth: " +
+                                 value + "}}\n"));
+    EXPECT_NE(message.find("structures[0].generated.azimuth"), std::string::npos) << message;
+    EXPECT_TRUE(message.find("not a number") != std::string::npos ||
+                message.find("must be a finite number") != std::string::npos)
+        << message;
+  }
+}
+
 TEST(AvatarManifestTest, SkinAxesMustBeTwoDifferentSignedAxes) {
   MeshSource source;
   source.path = kHumanZae;
@@ -121,6 +137,34 @@ TEST(AvatarManifestTest, AxisConversionKeepsTheBodysLeftOnItsLeft) {
   float highest = 0;
   for (const Eigen::Vector3f& v : mesh.vertices) highest = std::max(highest, v.z());
   EXPECT_NEAR(highest, 1.0f, 1e-5f);  // the file's +y is up
+}
+
+TEST(AvatarManifestTest, AtlasMeshReplacesTheGeneratedShapeWithoutCodeChanges) {
+  // A millimetre, z-up "atlas" tetrahedron facing -y (BodyParts3D's convention) as the soleus.
+  test::writeTemporary("FMA22542.obj",
+                       "v 0 0 0\nv 0 0 100\nv 0 -20 0\nv 50 -5 30\nf 1 2 3\nf 1 4 2\nf 2 4 3\n"
+                       "f 1 3 4\n");
+  const std::string path = test::writeTemporary(
+      "atlas_manifest.yaml",
+      manifestWith(
+          kHumanZae,
+          "  - {id: soleus, sides: [left], region: lower limb, system: muscular system,\n"
+          "     fma_id: \"FMA:22542\", mesh: {file: FMA22542.obj, up_axis: \"+z\",\n"
+          "     forward_axis: \"-y\", unit_in_metres: 0.001, translation: [0, 0.1, 0.2]}}\n"));
+  const AvatarModel model = buildAvatarModel(path, test::catalog());
+  const AvatarStructure* soleus = model.structure("soleus", Side::kLeft);
+  ASSERT_NE(soleus, nullptr);
+  EXPECT_EQ(soleus->fma_id, "FMA:22542");
+  ASSERT_EQ(soleus->mesh.vertices.size(), 4u);
+  float top = -1, forward = -1;
+  for (const Eigen::Vector3f& v : soleus->mesh.vertices) {
+    top = std::max(top, v.z());
+    forward = std::max(forward, v.x());
+  }
+  EXPECT_NEAR(top, 0.3f, 1e-5f);       // 100 mm up, translated 0.2 m
+  EXPECT_NEAR(forward, 0.02f, 1e-5f);  // the file's -y (20 mm) is forward
+  EXPECT_GT(signedVolume(soleus->mesh), 0);
+  EXPECT_EQ(model.structures.size(), 1u);
 }
 
 }  // namespace

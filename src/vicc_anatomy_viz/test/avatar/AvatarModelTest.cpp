@@ -27,6 +27,22 @@ TEST(AvatarModelTest, SkinIsTheMakeHumanBodyStandingInRep103) {
   EXPECT_LT(signedVolume(model.skin), 0.08);
 }
 
+TEST(AvatarModelTest, SkinNormalsPointOutwards) {
+  const TriangleMesh& skin = defaultAvatar().model.skin;
+  ASSERT_EQ(skin.normals.size(), skin.vertices.size());
+  int outward = 0, checked = 0;
+  for (std::size_t i = 0; i < skin.vertices.size(); i += 150) {
+    EXPECT_NEAR(skin.normals[i].norm(), 1.0f, 1e-4f);
+    const Eigen::Vector3f outside = skin.vertices[i] + 0.002f * skin.normals[i];
+    const Eigen::Vector3f inside = skin.vertices[i] - 0.002f * skin.normals[i];
+    outward += windingNumber(skin, outside) < 0.5 && windingNumber(skin, inside) > 0.5;
+    ++checked;
+  }
+  // At creases (the closed lips, between the toes) 2 mm along the normal reaches the facing
+  // skin: measured 3 of 90 samples there.
+  EXPECT_GE(outward, 0.95 * checked) << outward << " of " << checked;
+}
+
 TEST(AvatarModelTest, BodyFacesPlusXWithItsLeftAtPlusY) {
   const BodyLandmarks& landmarks = defaultAvatar().landmarks;
   for (const std::string side : {"left", "right"}) {
@@ -154,6 +170,38 @@ TEST(AvatarModelTest, EveryCataloguedMuscleTendonAndOrganIsInTheModel) {
   }
 }
 
+TEST(AvatarModelTest, IssueElevenStructuresAreAllThereOnBothSides) {
+  // ISNCSCI key muscles C5-T1 and L2-S1, the other named muscles, the reflex tendons.
+  for (const std::string id : {"biceps_brachii",
+                               "brachialis",
+                               "extensor_carpi_radialis_longus",
+                               "triceps_brachii",
+                               "flexor_digitorum_profundus",
+                               "abductor_digiti_minimi",
+                               "iliopsoas",
+                               "quadriceps_femoris",
+                               "tibialis_anterior",
+                               "extensor_hallucis_longus",
+                               "gastrocnemius",
+                               "soleus",
+                               "biceps_femoris",
+                               "semitendinosus",
+                               "gluteus_maximus",
+                               "deltoid",
+                               "flexor_carpi_radialis",
+                               "flexor_carpi_ulnaris",
+                               "biceps_brachii_tendon",
+                               "brachioradialis_tendon",
+                               "triceps_brachii_tendon",
+                               "patellar_ligament",
+                               "calcaneal_tendon"}) {
+    for (Side side : {Side::kLeft, Side::kRight}) {
+      EXPECT_NE(defaultAvatar().model.structure(id, side), nullptr) << id << " " << toString(side);
+    }
+  }
+  EXPECT_NE(defaultAvatar().model.structure("external_anal_sphincter", Side::kNone), nullptr);
+}
+
 TEST(AvatarModelTest, SmallStructuresHaveProxiesOnTheSkinAboveThem) {
   const AvatarBuild& build = defaultAvatar();
   for (const AvatarStructure& structure : build.model.structures) {
@@ -167,6 +215,15 @@ TEST(AvatarModelTest, SmallStructuresHaveProxiesOnTheSkinAboveThem) {
     EXPECT_LT(
         windingNumber(build.model.skin, structure.proxy.centre + 0.01f * structure.proxy.normal),
         0.5);
+  }
+  // The proxy is on the skin over its structure (within a few centimetres of it).
+  for (const AvatarStructure& structure : build.model.structures) {
+    if (!structure.has_proxy) continue;
+    float nearest = 1e9f;
+    for (const Eigen::Vector3f& v : structure.mesh.vertices) {
+      nearest = std::min(nearest, (v - structure.proxy.centre).norm());
+    }
+    EXPECT_LT(nearest, 0.07f) << structure.display_name;
   }
   // The patellar reflex proxy sits on the patella: front of the knee.
   const AvatarStructure* patellar = build.model.structure("patellar_ligament", Side::kLeft);
