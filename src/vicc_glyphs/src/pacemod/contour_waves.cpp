@@ -162,22 +162,23 @@ BSplineCurve translateKnotPoints(const BSplineCurve& fit, const ContourWave& wav
   return sparseFowlerBartels(fit, constraints);
 }
 
-// Index of the layout peak nearest to `arc_length`.
+// Index of the layout peak nearest to `arc_length` (peaks are sorted by arc length).
 std::size_t nearestPeak(const WaveLayout& layout, double arc_length) {
-  std::size_t best = 0;
-  for (std::size_t i = 1; i < layout.peaks.size(); ++i) {
-    if (std::abs(layout.peaks[i].arc_length - arc_length) <
-        std::abs(layout.peaks[best].arc_length - arc_length)) {
-      best = i;
-    }
-  }
-  return best;
+  const auto upper =
+      std::lower_bound(layout.peaks.begin(), layout.peaks.end(), arc_length,
+                       [](const WavePeak& peak, double l) { return peak.arc_length < l; });
+  if (upper == layout.peaks.begin()) return 0;
+  if (upper == layout.peaks.end()) return layout.peaks.size() - 1;
+  const std::size_t after = upper - layout.peaks.begin();
+  return arc_length - layout.peaks[after - 1].arc_length < upper->arc_length - arc_length
+             ? after - 1
+             : after;
 }
 
 // Rectangle: corner knots of multiplicity 3, every de Boor point first moved with
 // its nearest knot point along the normal at its Greville abscissa, so that the plateaus follow
-// the offset contour, then Fowler-Bartels meets the knot points exactly and the flanks are
-// made straight.
+// the offset contour, then Fowler-Bartels meets the knot points exactly and the flanks become
+// strips (fitStrips).
 BSplineCurve rectangleWave(const BSplineCurve& original, const bspline::ArcLengthTable& table,
                            const BSplineCurve& fit, double area, const ContourWave& wave) {
   // Fitting on the final knot vector gives the same curve space as raising the corner knots of
