@@ -14,7 +14,9 @@ add_library(vicc_glyphs_pacemod
   src/pacemod/nearest_curve_point.cpp
   src/pacemod/skeleton_guard.cpp
   src/pacemod/polyline.cpp
+  src/pacemod/polygon_crossings.cpp
   src/pacemod/curve_selection.cpp
+  src/pacemod/sparse_fowler_bartels.cpp
   src/pacemod/contour_waves.cpp
   src/pacemod/periodic_waves.cpp
   src/pacemod/offset_contour.cpp
@@ -29,18 +31,6 @@ install(TARGETS vicc_glyphs_pacemod
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 
-if(CATKIN_ENABLE_TESTING)
-  catkin_add_gtest(vicc_glyphs_pacemod_test
-    test/pacemod/WaveLayoutTest.cpp
-    test/pacemod/FeatureTransformTest.cpp
-    test/pacemod/SkeletonGuardTest.cpp
-    test/pacemod/ContourWavesTest.cpp
-  )
-  target_compile_options(vicc_glyphs_pacemod_test PRIVATE ${VICC_WARNINGS})
-  target_compile_definitions(vicc_glyphs_pacemod_test PRIVATE
-    VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
-  target_link_libraries(vicc_glyphs_pacemod_test vicc_glyphs_pacemod gtest_main)
-endif()
 
 # The `modify` subcommand of vicc_glyph (registered in src/tools/subcommands.cpp).
 if(TARGET vicc_glyph)
@@ -49,4 +39,65 @@ if(TARGET vicc_glyph)
     src/tools/modify_report.cpp
     src/tools/modify_command.cpp)
   target_link_libraries(vicc_glyph vicc_glyphs_pacemod)
+endif()
+
+# The measurements of the PACEMOD bench, shared with its fast GoogleTest subset.
+if(TARGET vicc_glyphs_render AND TARGET vicc_glyphs_io)
+  add_library(vicc_glyphs_pacemod_measure STATIC
+    bench/pacemod/wave_measurement.cpp
+    bench/pacemod/wave_check.cpp)
+  target_compile_options(vicc_glyphs_pacemod_measure PRIVATE ${VICC_WARNINGS})
+  target_link_libraries(vicc_glyphs_pacemod_measure vicc_glyphs_pacemod)
+
+  add_executable(vicc_glyphs_pacemod_bench bench/pacemod/pacemod_bench.cpp)
+  target_compile_options(vicc_glyphs_pacemod_bench PRIVATE ${VICC_WARNINGS})
+  target_compile_definitions(vicc_glyphs_pacemod_bench PRIVATE
+    VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
+  target_link_libraries(vicc_glyphs_pacemod_bench vicc_glyphs_pacemod_measure vicc_glyphs_io
+    vicc_glyphs_render)
+endif()
+
+if(CATKIN_ENABLE_TESTING)
+  catkin_add_gtest(vicc_glyphs_pacemod_test
+    test/pacemod/WaveLayoutTest.cpp
+    test/pacemod/FeatureTransformTest.cpp
+    test/pacemod/SkeletonGuardTest.cpp
+    test/pacemod/ContourWavesTest.cpp
+    test/pacemod/OffsetContourTest.cpp
+  )
+  target_compile_options(vicc_glyphs_pacemod_test PRIVATE ${VICC_WARNINGS})
+  target_compile_definitions(vicc_glyphs_pacemod_test PRIVATE
+    VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
+  target_link_libraries(vicc_glyphs_pacemod_test vicc_glyphs_pacemod gtest_main)
+  # Real icons end to end (imports, renders): the fast subset of bench/pacemod.
+  if(TARGET vicc_glyphs_pacemod_measure)
+    catkin_add_gtest(vicc_glyphs_pacemod_glyph_test test/pacemod/PacemodGlyphTest.cpp)
+    target_compile_options(vicc_glyphs_pacemod_glyph_test PRIVATE ${VICC_WARNINGS})
+    target_include_directories(vicc_glyphs_pacemod_glyph_test PRIVATE bench/pacemod)
+    target_compile_definitions(vicc_glyphs_pacemod_glyph_test PRIVATE
+      VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data"
+      VICC_GLYPHS_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/test/data")
+    target_link_libraries(vicc_glyphs_pacemod_glyph_test vicc_glyphs_pacemod_measure
+      vicc_glyphs_io vicc_glyphs_render gtest_main)
+  endif()
+  # vicc_glyph modify as a user runs it.
+  if(TARGET vicc_glyph)
+    catkin_add_gtest(vicc_glyphs_pacemod_cli_test test/pacemod/ModifyCliTest.cpp)
+    target_compile_options(vicc_glyphs_pacemod_cli_test PRIVATE ${VICC_WARNINGS})
+    target_compile_definitions(vicc_glyphs_pacemod_cli_test PRIVATE
+      VICC_GLYPH_BINARY="$<TARGET_FILE:vicc_glyph>"
+      VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
+    target_include_directories(vicc_glyphs_pacemod_cli_test SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
+    target_link_libraries(vicc_glyphs_pacemod_cli_test vicc_glyphs_io ${OpenCV_LIBS} gtest_main)
+    add_dependencies(vicc_glyphs_pacemod_cli_test vicc_glyph)
+  endif()
+endif()
+
+# OpenCV labels vs Maurer for the skeleton guard (bench/pacemod/README.md).
+if(TARGET vicc_glyphs_io)
+  add_executable(vicc_glyphs_feature_transform_bench bench/pacemod/feature_transform_bench.cpp)
+  target_compile_options(vicc_glyphs_feature_transform_bench PRIVATE ${VICC_WARNINGS})
+  target_compile_definitions(vicc_glyphs_feature_transform_bench PRIVATE
+    VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
+  target_link_libraries(vicc_glyphs_feature_transform_bench vicc_glyphs_pacemod vicc_glyphs_io)
 endif()

@@ -62,16 +62,6 @@ cv::Mat signedDistance(const Polyline& contour, const Grid& grid) {
 
 }  // namespace
 
-double polylineArea(const Polyline& line) {
-  double area = 0.0;
-  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
-    area += line[i].x() * line[i + 1].y() - line[i + 1].x() * line[i].y();
-  }
-  if (!line.empty())
-    area += line.back().x() * line.front().y() - line.front().x() * line.back().y();
-  return 0.5 * area;
-}
-
 Polyline offsetIsoline(const Polyline& contour, double offset, double grid_scale) {
   if (contour.size() < 4 || !std::isfinite(offset)) return {};
   const Grid grid = gridAround(contour, std::max(offset, 0.0) + 3.0, grid_scale);

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
 #include "vicc_glyphs/bspline/arc_length.hpp"
 #include "vicc_glyphs/bspline/spline_diffusion_curve.hpp"
 #include "vicc_glyphs/pacemod/contour_waves.hpp"
+#include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 #include "vicc_glyphs/pacemod/polyline.hpp"
 
 namespace vicc_glyphs {
@@ -15,11 +17,23 @@ namespace pacemod {
 namespace {
 
 constexpr double kMinQuarterPeriodPx = 0.5;
+constexpr int kSamplesPerSpan = 16;  // as dense as the bench's polygon check
 
-template <typename Points>
-void toArcLength(Points& points, const bspline::ArcLengthTable& table) {
-  for (auto& point : points) point.position = table.lengthAt(point.position);
-}
+// A curve being waved: its spline form, arc-length table, current wave and amplitude caps.
+struct WavedContour {
+  bspline::SplineDiffusionCurve spline;
+  std::unique_ptr<bspline::ArcLengthTable> table;
+  std::unique_ptr<ContourWave> wave;
+  std::vector<double> caps;
+  CurveWaveReport report;
+};
+
+struct Context {
+  const WaveSpec& spec;
+  double px_per_mm;
+  const SkeletonGuard* guard;
+  bool stretch_at_corners;
+};
 
 void checkArguments(const DiffusionCurveImage& image, const std::vector<int>& curves,
                     const WaveSpec& spec, double glyph_size_mm) {
@@ -36,8 +50,111 @@ void checkArguments(const DiffusionCurveImage& image, const std::vector<int>& cu
   }
 }
 
-void measureRealised(const ContourWave& wave, const Polyline& original, double px_per_mm,
-                     CurveWaveReport& report) {
+void build(WavedContour& contour, const Context& context) {
+  contour.wave = std::make_unique<ContourWave>(modifyContour(
+      contour.spline.geometry, *contour.table, context.spec.waveform, contour.report.wave_count,
+      context.spec.amplitude_mm * context.px_per_mm, context.guard, contour.caps));
+  if (contour.caps.empty()) {
+    contour.caps.assign(contour.wave->guarded.size(), 1e300);
+    for (std::size_t i = 0; i < contour.caps.size(); ++i) {
+      contour.caps[i] = contour.wave->guarded[i].amplitude;
+    }
+  }
+}
+
+// Null when the curve stays unchanged (the report says why).
+std::unique_ptr<WavedContour> prepare(const DiffusionCurve& curve, int index,
+                                      const Context& context, CurveWaveReport& report) {
+  report.curve = index;
+  report.requested_amplitude_mm = context.spec.amplitude_mm;
+  if (curve.segmentCount() < 1 ||
+      (curve.control_points.front() - curve.control_points.back()).norm() > 1e-6) {
+    report.skipped = "not a closed curve";
+    return nullptr;
+  }
+  std::unique_ptr<WavedContour> contour(
+      new WavedContour{bspline::toSplineDiffusionCurve(curve), nullptr, nullptr, {}, report});
+  contour->table = std::make_unique<bspline::ArcLengthTable>(contour->spline.geometry);
+  const double length = contour->table->totalLength();
+  report.arc_length_mm = length / context.px_per_mm;
+  report.requested_waves = context.spec.waves_per_mm * report.arc_length_mm;
+  report.wave_count = wholeWaveCount(context.spec.waves_per_mm, report.arc_length_mm);
+  if (report.wave_count == 0) {
+    report.skipped = "fewer than half a wave fits on the contour";
+    return nullptr;
+  }
+  if (length / (4.0 * report.wave_count) < kMinQuarterPeriodPx) {
+    throw std::invalid_argument("waves_per_mm too high for curve " + std::to_string(index) +
+                                ": a quarter period would be shorter than half a pixel");
+  }
+  contour->report = report;
+  build(*contour, context);
+  return contour;
+}
+
+// Polyline of the wave's spline with the spline parameter (= original arc length) per point.
+Polyline sampleWave(const ContourWave& wave, std::vector<double>& parameters) {
+  Polyline line;
+  parameters.clear();
+  const std::vector<double> breaks = wave.curve.breakpoints();
+  for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+    for (int k = 0; k < kSamplesPerSpan; ++k) {
+      parameters.push_back(breaks[i] + (breaks[i + 1] - breaks[i]) * k / kSamplesPerSpan);
+      line.push_back(wave.curve.pointAt(parameters.back()));
+    }
+  }
+  parameters.push_back(breaks.back());
+  line.push_back(wave.curve.pointAt(breaks.back()));
+  return line;
+}
+
+// Halves the caps of the knot points within half a period of arc length `u` (cyclically).
+void capAround(WavedContour& contour, double u, bool last_round) {
+  const WaveLayout& layout = contour.wave->layout;
+  const double half_period = 0.5 * layout.length / layout.wave_count;
+  for (std::size_t i = 0; i < layout.peaks.size(); ++i) {
+    const double d = std::abs(layout.peaks[i].arc_length - u);
+    if (std::min(d, layout.length - d) > half_period) continue;
+    contour.caps[i] = last_round ? 0.0 : 0.5 * contour.wave->guarded[i].amplitude;
+  }
+  contour.caps.back() = contour.caps.front() = std::min(contour.caps.front(), contour.caps.back());
+}
+
+// The polygon check after the skeleton guard; returns the crossings left per image curve.
+std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
+                                   std::map<int, std::unique_ptr<WavedContour>>& waved,
+                                   const Context& context) {
+  std::map<int, int> left;
+  for (int round = 0; round <= kMaxRepairRounds; ++round) {
+    std::vector<Polyline> lines;
+    std::vector<std::vector<double>> parameters(image.curves.size());
+    for (int i = 0; i < static_cast<int>(image.curves.size()); ++i) {
+      const auto found = waved.find(i);
+      lines.push_back(found != waved.end() ? sampleWave(*found->second->wave, parameters[i])
+                                           : sampleCurve(image.curves[i], 16));
+    }
+    const std::vector<Crossing> crossings = findCrossings(lines);
+    std::map<int, bool> changed;
+    left.clear();
+    for (const Crossing& crossing : crossings) {
+      for (const SegmentRef& side : {crossing.a, crossing.b}) {
+        ++left[side.line];
+        const auto found = waved.find(side.line);
+        if (found == waved.end() || round == kMaxRepairRounds) continue;
+        capAround(*found->second, parameters[side.line][side.segment],
+                  round + 1 == kMaxRepairRounds);
+        changed[side.line] = true;
+      }
+    }
+    if (changed.empty()) break;
+    for (const auto& entry : changed) build(*waved[entry.first], context);
+  }
+  return left;
+}
+
+void finishReport(const WavedContour& contour, const Polyline& original, double px_per_mm,
+                  CurveWaveReport& report) {
+  const ContourWave& wave = *contour.wave;
   double sum = 0.0, low = 1e300, high = 0.0;
   for (const WavePeak& peak : wave.layout.peaks) {
     const double d = distanceToPolyline(wave.curve.pointAt(peak.arc_length), original) / px_per_mm;
@@ -50,54 +167,37 @@ void measureRealised(const ContourWave& wave, const Polyline& original, double p
   report.realised_amplitude_mean_mm = sum / wave.layout.peaks.size();
   report.realised_amplitude_max_mm = high;
   for (std::size_t i = 0; i + 1 < wave.guarded.size(); ++i) {  // the last repeats the first
-    if (wave.guarded[i].reduced) {
-      report.reductions.push_back(
-          {wave.layout.peaks[i].arc_length / px_per_mm, wave.guarded[i].amplitude / px_per_mm});
+    if (wave.guarded[i].reduced || wave.capped[i]) {
+      report.reductions.push_back({wave.layout.peaks[i].arc_length / px_per_mm,
+                                   wave.guarded[i].amplitude / px_per_mm,
+                                   wave.capped[i] ? "crossing" : "skeleton"});
     }
   }
 }
 
-CurveWaveReport modifyCurve(DiffusionCurve& curve, int index, const WaveSpec& spec,
-                            double px_per_mm, const SkeletonGuard* guard) {
-  CurveWaveReport report;
-  report.curve = index;
-  report.requested_amplitude_mm = spec.amplitude_mm;
-  if (curve.segmentCount() < 1 ||
-      (curve.control_points.front() - curve.control_points.back()).norm() > 1e-6) {
-    report.skipped = "not a closed curve";
-    return report;
-  }
-  bspline::SplineDiffusionCurve spline = bspline::toSplineDiffusionCurve(curve);
-  const bspline::ArcLengthTable table(spline.geometry);
-  const double length = table.totalLength();
-  report.arc_length_mm = length / px_per_mm;
-  report.requested_waves = spec.waves_per_mm * report.arc_length_mm;
-  report.wave_count = wholeWaveCount(spec.waves_per_mm, report.arc_length_mm);
-  if (report.wave_count == 0) {
-    report.skipped = "fewer than half a wave fits on the contour";
-    return report;
-  }
-  if (length / (4.0 * report.wave_count) < kMinQuarterPeriodPx) {
-    throw std::invalid_argument("waves_per_mm too high for curve " + std::to_string(index) +
-                                ": a quarter period would be shorter than half a pixel");
-  }
-  const ContourWave wave = modifyContour(spline.geometry, table, spec.waveform, report.wave_count,
-                                         spec.amplitude_mm * px_per_mm, guard);
-  measureRealised(wave, sampleCurve(curve, 32), px_per_mm, report);
-  toArcLength(spline.left_colors, table);
-  toArcLength(spline.right_colors, table);
-  toArcLength(spline.blur_points, table);
-  spline.geometry = wave.curve;
-  curve = bspline::toDiffusionCurve(spline);
-  return report;
+template <typename Points>
+void toArcLength(Points& points, const bspline::ArcLengthTable& table) {
+  for (auto& point : points) point.position = table.lengthAt(point.position);
+}
+
+DiffusionCurve wavedCurve(WavedContour& contour) {
+  bspline::SplineDiffusionCurve spline = contour.spline;
+  toArcLength(spline.left_colors, *contour.table);
+  toArcLength(spline.right_colors, *contour.table);
+  toArcLength(spline.blur_points, *contour.table);
+  spline.geometry = contour.wave->curve;
+  return bspline::toDiffusionCurve(spline);
 }
 
 }  // namespace
 
-std::vector<CurveWaveReport> applyWaves(DiffusionCurveImage& image, const std::vector<int>& curves,
-                                        const WaveSpec& spec, double glyph_size_mm,
-                                        const WaveOptions& options) {
-  checkArguments(image, curves, spec, glyph_size_mm);
+std::vector<CurveWaveReport> applyWaves(DiffusionCurveImage& image,
+                                        const std::vector<int>& curves_in, const WaveSpec& spec,
+                                        double glyph_size_mm, const WaveOptions& options) {
+  checkArguments(image, curves_in, spec, glyph_size_mm);
+  std::vector<int> curves = curves_in;
+  std::sort(curves.begin(), curves.end());
+  curves.erase(std::unique(curves.begin(), curves.end()), curves.end());
   const double px_per_mm = image.width / glyph_size_mm;
   std::unique_ptr<NearestCurvePoint> field;
   std::unique_ptr<SkeletonGuard> guard;
@@ -109,9 +209,23 @@ std::vector<CurveWaveReport> applyWaves(DiffusionCurveImage& image, const std::v
                                             options.field_grid_scale, options.feature_transform);
     guard = std::make_unique<SkeletonGuard>(*field, options.skeleton_offset_mm * px_per_mm);
   }
-  std::vector<CurveWaveReport> reports;
-  for (int index : curves) {
-    reports.push_back(modifyCurve(image.curves[index], index, spec, px_per_mm, guard.get()));
+  const Context context{spec, px_per_mm, guard.get(), options.stretch_at_corners};
+  std::vector<CurveWaveReport> reports(curves.size());
+  std::map<int, std::unique_ptr<WavedContour>> waved;
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    std::unique_ptr<WavedContour> contour =
+        prepare(image.curves[curves[k]], curves[k], context, reports[k]);
+    if (contour) waved[curves[k]] = std::move(contour);
+  }
+  std::map<int, int> left;
+  if (options.prevent_self_intersection) left = repairCrossings(image, waved, context);
+  for (CurveWaveReport& report : reports) {
+    const auto found = waved.find(report.curve);
+    if (found == waved.end()) continue;
+    report = found->second->report;
+    finishReport(*found->second, sampleCurve(image.curves[report.curve], 32), px_per_mm, report);
+    report.unresolved_crossings = left.count(report.curve) ? left[report.curve] : 0;
+    image.curves[report.curve] = wavedCurve(*found->second);
   }
   return reports;
 }

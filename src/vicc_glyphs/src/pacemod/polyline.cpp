@@ -31,6 +31,16 @@ double distanceToPolyline(const Point2& point, const Polyline& line) {
   return std::sqrt(best);
 }
 
+double polylineArea(const Polyline& line) {
+  double area = 0.0;
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+    area += line[i].x() * line[i + 1].y() - line[i + 1].x() * line[i].y();
+  }
+  if (!line.empty())
+    area += line.back().x() * line.front().y() - line.front().x() * line.back().y();
+  return 0.5 * area;
+}
+
 bool insidePolygon(const Point2& point, const Polyline& line) {
   bool inside = false;
   for (std::size_t i = 0, j = line.size() - 1; i < line.size(); j = i++) {

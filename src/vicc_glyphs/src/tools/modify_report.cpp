@@ -6,8 +6,9 @@ namespace {
 nlohmann::json waveJson(const pacemod::CurveWaveReport& r) {
   nlohmann::json reductions = nlohmann::json::array();
   for (const pacemod::PeakReduction& p : r.reductions) {
-    reductions.push_back(
-        {{"arc_length_mm", p.arc_length_mm}, {"allowed_amplitude_mm", p.allowed_mm}});
+    reductions.push_back({{"arc_length_mm", p.arc_length_mm},
+                          {"allowed_amplitude_mm", p.allowed_mm},
+                          {"reason", p.reason}});
   }
   nlohmann::json j{{"curve", r.curve},
                    {"arc_length_mm", r.arc_length_mm},
@@ -19,7 +20,8 @@ nlohmann::json waveJson(const pacemod::CurveWaveReport& r) {
                     {{"min", r.realised_amplitude_min_mm},
                      {"mean", r.realised_amplitude_mean_mm},
                      {"max", r.realised_amplitude_max_mm}}},
-                   {"reduced_by_self_intersection_prevention", reductions}};
+                   {"reduced_by_self_intersection_prevention", reductions},
+                   {"unresolved_crossings", r.unresolved_crossings}};
   if (!r.skipped.empty()) j["skipped"] = r.skipped;
   return j;
 }

@@ -2,14 +2,18 @@
 // One closed contour with a periodic geometric wave (thesis 6.2.3.3 and 6.2.4.1):
 // 1. the contour is re-fitted by least squares onto the layout's knots, now placed at arc-length
 //    positions (the spline is re-parametrised by the original's arc length, domain [0, L]);
-// 2. the knot points (wave peaks / corners) are translated along the outward normal of that
-//    fit with alternating signs, each amplitude limited by the skeleton guard if one is given;
+// 2. the knot points (wave peaks / corners) are translated along the outward normal of a
+//    smooth fit with single knots every quarter period (the sine's knots) with alternating signs,
+//    each amplitude limited by the skeleton guard if one is given;
 // 3. sine: Fowler-Bartels moves the de Boor points so that the curve meets the translated knot
 //    points exactly (plus equal first derivatives at the closing point, for a smooth seam);
-//    rectangle: the corner knots are raised to multiplicity 3 by knot insertion before
-//    Fowler-Bartels and the flank spans are made straight; triangle and sawtooth consist of
-//    straight strips only, so their de Boor points are the corners and the points a third and
-//    two thirds along each strip (every third point a corner, Fig. 6.14B).
+//    rectangle: the contour is fitted on the knot vector with the corner knots of multiplicity
+//    3, its de Boor points moved with their nearest knot point along the normal, then
+//    Fowler-Bartels and the flank spans become strips; triangle and sawtooth consist of strips
+//    only: every third de Boor point is a corner (Fig. 6.14B) and the two between are fitted to
+//    the contour offset linearly from one corner's amplitude to the next. On a straight contour
+//    that is the thesis' straight line with the points at a third and two thirds; on a curved
+//    contour the strip bends with it, so that the amplitude stays what was asked for.
 
 #include <vector>
 
@@ -27,17 +31,26 @@ struct ContourWave {
   std::vector<Point2> knot_points;   ///< per layout peak: the original contour point k
   std::vector<Point2> directions;    ///< per layout peak: unit translation direction (sign * n)
   std::vector<GuardResult> guarded;  ///< per layout peak: the amplitude actually applied
+  std::vector<bool> capped;          ///< per layout peak: limited by `caps` (crossing repair)
+  /// per layout peak: the translation length; the amplitude, or with stretch_at_corners next to a
+  /// sharp convex corner of the contour longer, so that the translated knot point still ends
+  /// `amplitude` away from the contour (the distance the amplitude is measured by).
+  std::vector<double> translations;
 };
 
 /// `original` must be closed (first == last point) and have a tangent everywhere; `table` its
-/// arc-length table; amplitude in image pixels (>= 0); `guard` may be null (no prevention).
+/// arc-length table; amplitude in image pixels (>= 0); `guard` may be null (no prevention);
+/// `caps`: empty, or per layout peak an upper bound on its amplitude (pixels);
+/// `stretch_at_corners`: lengthen translations next to sharp convex corners (see translations).
 /// Throws std::invalid_argument for an open curve or wave_count < 1.
 ContourWave modifyContour(const bspline::BSplineCurve& original,
                           const bspline::ArcLengthTable& table, Waveform waveform, int wave_count,
-                          double amplitude, const SkeletonGuard* guard);
+                          double amplitude, const SkeletonGuard* guard,
+                          const std::vector<double>& caps = {}, bool stretch_at_corners = false);
 
-/// Least-squares fit of `original` onto `knots` (a clamped cubic knot vector over [0, L]) with
-/// the spline parameter equal to the original's arc length: 8 samples per knot span.
+/// Least-squares fit (normal equations, sparse Cholesky) of `original` onto `knots` (a clamped
+/// cubic knot vector over [0, L]) with the spline parameter equal to the original's arc length: 8
+/// samples per knot span.
 bspline::BSplineCurve fitOnArcLength(const bspline::BSplineCurve& original,
                                      const bspline::ArcLengthTable& table,
                                      const std::vector<double>& knots);

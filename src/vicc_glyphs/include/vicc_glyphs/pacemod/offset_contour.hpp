@@ -25,8 +25,5 @@ Polyline offsetIsoline(const Polyline& contour, double offset, double grid_scale
 /// std::invalid_argument for fewer than 4 distinct points.
 std::vector<Point2> closedBezierFit(const Polyline& line, double knot_spacing = 6.0);
 
-/// Shoelace area of a closed polyline (positive: clockwise on screen, y down).
-double polylineArea(const Polyline& line);
-
 }  // namespace pacemod
 }  // namespace vicc_glyphs

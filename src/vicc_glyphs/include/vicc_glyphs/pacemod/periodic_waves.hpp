@@ -10,8 +10,11 @@
 // image.width / glyph_size_mm pixels. Each selected closed curve gets
 // round(waves_per_mm * arc length in mm) whole waves (0: left unchanged and reported so);
 // open curves are left unchanged and reported as skipped. Colour and blur points keep their
-// arc-length positions. Self-intersection prevention (skeleton half-space test against all
-// curves of the unmodified image) reduces single peaks where needed; the report says where.
+// arc-length positions. Self-intersection prevention: the skeleton half-space test against all
+// curves of the unmodified image limits each knot point (thesis 6.2.4.1); as that test only
+// looks at the knot points, a polygon check of all resulting curves follows, and the knot points
+// within half a period of a remaining crossing get their amplitude halved until no crossing is
+// left (an addition to the thesis, needed at sharp concave corners). The report says where.
 
 #include <string>
 #include <vector>
@@ -30,13 +33,23 @@ struct WaveOptions {
   double skeleton_offset_mm = 0.3;
   double field_grid_scale = 1.0;  ///< feature-transform grid pixels per image pixel
   FeatureTransform feature_transform = FeatureTransform::Maurer;
+  /// Lengthen translations next to sharp convex corners so that the knot points keep the full
+  /// distance from the contour (see ContourWave::translations).
+  bool stretch_at_corners = false;
 };
 
-/// A knot point whose translation the skeleton guard shortened.
+/// A knot point whose translation was shortened.
 struct PeakReduction {
   double arc_length_mm = 0.0;  ///< along the original contour from its start point
   double allowed_mm = 0.0;     ///< the amplitude applied instead of the requested one
+  /// "skeleton": the half-space test of 6.2.4.1; "crossing": the polygon check after it (the
+  /// modified contours still crossed near this knot point, so its amplitude was halved, at
+  /// most kMaxRepairRounds times, the last time to 0).
+  std::string reason;
 };
+
+/// Rounds of the polygon check that follows the skeleton guard.
+constexpr int kMaxRepairRounds = 6;
 
 struct CurveWaveReport {
   int curve = 0;  ///< index in the image
@@ -51,10 +64,14 @@ struct CurveWaveReport {
   double realised_amplitude_mean_mm = 0.0;
   double realised_amplitude_max_mm = 0.0;
   std::vector<PeakReduction> reductions;
+  /// Crossings of this curve's polygon with itself or another curve that remain after the
+  /// repair rounds (0 in every bench case; reported, never hidden).
+  int unresolved_crossings = 0;
   std::string skipped;  ///< non-empty: why the curve was left unchanged
 };
 
-/// Modifies `image` in place. Throws std::invalid_argument for an invalid spec (message names
+/// Modifies `image` in place; one report per selected curve, in increasing curve order
+/// (duplicate indices are ignored). Throws std::invalid_argument for an invalid spec (message names
 /// waves_per_mm / amplitude_mm), glyph_size_mm not finite and > 0, a curve index out of range,
 /// or a frequency so high that a quarter period would be shorter than half a pixel.
 std::vector<CurveWaveReport> applyWaves(DiffusionCurveImage& image, const std::vector<int>& curves,

@@ -17,6 +17,9 @@ Polyline sampleCurve(const DiffusionCurve& curve, int per_segment = 16);
 /// Euclidean distance from `point` to the nearest point of `line` (+inf for an empty line).
 double distanceToPolyline(const Point2& point, const Polyline& line);
 
+/// Shoelace area of a closed polyline (positive: clockwise on screen, y down).
+double polylineArea(const Polyline& line);
+
 /// True when `point` lies inside the closed polygon `line` (even-odd rule).
 bool insidePolygon(const Point2& point, const Polyline& line);
 

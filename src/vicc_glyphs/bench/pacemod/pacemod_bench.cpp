@@ -1,0 +1,170 @@
+// PACEMOD wave benchmark: every icon of data/icons x waveforms x frequencies x amplitudes.
+// Each glyph is imported at 512 px (50 mm wide), waved with applyWaves on all curves and
+// rendered; then, on the result, the waves along each modified contour are counted and their
+// amplitudes measured from the distance to the original contour (wave_measurement.hpp), and
+// all polygons are checked for crossings. Prints Markdown tables (see README.md here).
+// Usage: vicc_glyphs_pacemod_bench [ICON_DIR] [--quick] [--verbose] [--stretch-at-corners]
+//        [--opencv-labels]
+
+#include <algorithm>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "vicc_glyphs/io/load.hpp"
+#include "vicc_glyphs/pacemod/curve_selection.hpp"
+#include "vicc_glyphs/pacemod/periodic_waves.hpp"
+#include "vicc_glyphs/pacemod/wave_layout.hpp"
+#include "vicc_glyphs/render/renderer.hpp"
+#include "wave_check.hpp"
+
+namespace fs = std::filesystem;
+using namespace vicc_glyphs;
+using namespace vicc_glyphs::pacemod;
+
+namespace {
+
+constexpr int kSize = 512;
+constexpr double kSizeMm = 50.0;
+
+// CPU time of this thread: "one core", independent of other processes on a shared machine.
+double threadMilliseconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return now.tv_sec * 1e3 + now.tv_nsec * 1e-6;
+}
+
+bool verbose = false;
+WaveOptions options;
+
+struct Totals {
+  int glyphs = 0;
+  measure::GlyphCheck check;
+  std::vector<double> total_ms, modify_ms, render_ms;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+double maximum(const std::vector<double>& v) {
+  return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+}
+
+void runGlyph(const fs::path& icon, const WaveSpec& spec, DiffusionCurveRenderer& renderer,
+              RenderResult& result, Totals& totals) {
+  const double start = threadMilliseconds();
+  DiffusionCurveImage image = loadDiffusionCurves(icon.string(), kSize);
+  const DiffusionCurveImage original = image;
+  const double modify_start = threadMilliseconds();
+  const std::vector<CurveWaveReport> reports =
+      applyWaves(image, selectCurves(image, {}), spec, kSizeMm, options);
+  const double render_start = threadMilliseconds();
+  renderer.render(image, RenderOptions{}, result);
+  const double end = threadMilliseconds();
+  totals.modify_ms.push_back(render_start - modify_start);
+  totals.render_ms.push_back(end - render_start);
+  totals.total_ms.push_back(end - start);
+  ++totals.glyphs;
+  const measure::GlyphCheck check =
+      measure::checkGlyph(original, image, reports, spec, kSize / kSizeMm);
+  if (verbose && (check.new_crossings > 0 || check.lobes_ok < check.lobes_checked ||
+                  check.count_ok < check.count_checked)) {
+    std::fprintf(stderr,
+                 "%s %s f=%g a=%g: crossings %d, lobes %d/%d (worst %.1f %%), count %d/%d\n",
+                 icon.filename().c_str(), waveformName(spec.waveform).c_str(),
+                 spec.waves_per_mm * 10, spec.amplitude_mm, check.new_crossings, check.lobes_ok,
+                 check.lobes_checked, 100 * check.worst_error, check.count_ok, check.count_checked);
+  }
+  if (verbose) {
+    for (const std::string& failure : check.failures)
+      std::fprintf(stderr, "    %s\n", failure.c_str());
+  }
+  measure::add(totals.check, check);
+}
+
+const char* kColumns =
+    "| glyphs | contours | count ok (decidable) | with all waves | undecidable | lobes within 10 % "
+    "| "
+    "median amp. err % | worst amp. err % | reduced knot points | new crossings | modify ms | "
+    "render ms | total ms median | total ms max |\n"
+    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+
+void printHeader(const char* first) {
+  std::printf("| %s ", first);
+  std::fputs(kColumns, stdout);
+}
+
+void printRow(const std::string& label, const Totals& t) {
+  const measure::GlyphCheck& c = t.check;
+  std::printf(
+      "| %s | %d | %d | %d/%d | %d | %d | %d/%d | %.1f | %.1f | %d | %d | %.1f | %.1f | %.1f | "
+      "%.1f |\n",
+      label.c_str(), t.glyphs, c.contours, c.count_ok, c.count_checked, c.contours_with_all_waves,
+      c.flattened_contours, c.lobes_ok, c.lobes_checked, 100.0 * c.median_error(),
+      100.0 * c.worst_error, c.reduced_peaks, c.new_crossings, median(t.modify_ms),
+      median(t.render_ms), median(t.total_ms), maximum(t.total_ms));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  fs::path dir = VICC_GLYPHS_DATA_DIR "/icons";
+  bool quick = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--quick") {
+      quick = true;
+    } else if (arg == "--verbose") {
+      verbose = true;
+    } else if (arg == "--stretch-at-corners") {
+      options.stretch_at_corners = true;
+    } else if (arg == "--opencv-labels") {
+      options.feature_transform = FeatureTransform::OpenCvLabels;
+    } else {
+      dir = arg;
+    }
+  }
+  std::vector<fs::path> icons;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.path().extension() == ".svg") icons.push_back(entry.path());
+  }
+  std::sort(icons.begin(), icons.end());
+  const std::vector<double> frequencies =
+      quick ? std::vector<double>{4} : std::vector<double>{2, 4, 8, 12};
+  const std::vector<double> amplitudes =
+      quick ? std::vector<double>{0.5} : std::vector<double>{0.1, 0.4, 0.8, 1.2};
+  DiffusionCurveRenderer renderer;
+  RenderResult result;
+  std::map<std::string, Totals> by_waveform;
+  std::printf("%zu icons, %d px = %.0f mm\n\n", icons.size(), kSize, kSizeMm);
+  printHeader("waveform, waves/10 mm, amplitude mm");
+  for (Waveform waveform :
+       {Waveform::Sine, Waveform::Triangle, Waveform::Sawtooth, Waveform::Rectangle}) {
+    for (double f : frequencies) {
+      for (double a : amplitudes) {
+        const WaveSpec spec{waveform, f / 10.0, a};
+        Totals totals;
+        for (const fs::path& icon : icons) runGlyph(icon, spec, renderer, result, totals);
+        char label[96];
+        std::snprintf(label, sizeof label, "%s, %g, %g", waveformName(waveform).c_str(), f, a);
+        printRow(label, totals);
+        Totals& all = by_waveform[waveformName(waveform)];
+        all.glyphs += totals.glyphs;
+        measure::add(all.check, totals.check);
+        for (double v : totals.total_ms) all.total_ms.push_back(v);
+        for (double v : totals.modify_ms) all.modify_ms.push_back(v);
+        for (double v : totals.render_ms) all.render_ms.push_back(v);
+      }
+    }
+  }
+  std::printf("\n");
+  printHeader("waveform (all frequencies and amplitudes)");
+  for (const auto& [name, totals] : by_waveform) printRow(name, totals);
+  return 0;
+}
