@@ -32,7 +32,7 @@ if(CATKIN_ENABLE_TESTING)
   find_package(rostest REQUIRED)
   add_rostest_gtest(glyph_server_rostest test/ros/glyph_server.test test/ros/GlyphServerRostest.cpp)
   target_compile_options(glyph_server_rostest PRIVATE ${VICC_WARNINGS})
-  target_link_libraries(glyph_server_rostest ${catkin_LIBRARIES})
+  target_link_libraries(glyph_server_rostest vicc_glyphs_server ${catkin_LIBRARIES})
   add_dependencies(glyph_server_rostest glyph_server ${catkin_EXPORTED_TARGETS})
   add_rostest(test/ros/glyph_server_nodelet.test
     DEPENDENCIES glyph_server_rostest vicc_glyphs_server_nodelet)

@@ -1,6 +1,8 @@
 // glyph_server node: see include/vicc_glyphs/ros/glyph_server.hpp.
 #include <ros/ros.h>
 
+#include <iostream>
+
 #include "vicc_glyphs/ros/glyph_server.hpp"
 
 int main(int argc, char** argv) {
@@ -9,6 +11,8 @@ int main(int argc, char** argv) {
     vicc_glyphs::ros_glyph::GlyphServer server(ros::NodeHandle(), ros::NodeHandle("~"));
     ros::spin();
   } catch (const std::exception& e) {
+    // Also on stderr: the node may fail before rosconsole's output is set up.
+    std::cerr << "glyph_server: " << e.what() << std::endl;
     ROS_FATAL("glyph_server: %s", e.what());
     return 1;
   }

@@ -8,7 +8,6 @@
 
 namespace vicc_glyphs::tools {
 
-int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out,
-                        std::ostream& err);
+int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 }  // namespace vicc_glyphs::tools

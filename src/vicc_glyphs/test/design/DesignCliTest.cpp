@@ -62,8 +62,9 @@ TEST_F(DesignCliTest, BadValuesExitTwoNamingTheParameter) {
 TEST_F(DesignCliTest, MapPlacesOneGlyphPerRow) {
   const auto csv = dir_ / "rows.csv", png = dir_ / "map.png";
   std::ofstream(csv) << "label,lon,lat,probability,amount\nA,8,50,95,1\nB,12,52,40,20\n";
-  const auto result = run("design-map " + design("rain_forecast_sine") + " --table " +
-                          csv.string() + " --out " + png.string() + " --glyph-size 128 --width 500");
+  const auto result =
+      run("design-map " + design("rain_forecast_sine") + " --table " + csv.string() + " --out " +
+          png.string() + " --glyph-size 128 --width 500");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("(2 glyphs)"), std::string::npos);
   const cv::Mat map = cv::imread(png.string());

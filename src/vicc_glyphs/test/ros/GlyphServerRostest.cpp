@@ -8,6 +8,8 @@
 
 #include <cmath>
 
+#include "vicc_glyphs/ros/glyph_server.hpp"
+
 namespace {
 
 vicc_msgs::RenderGlyph request(const std::string& design, std::vector<std::string> names,
@@ -94,6 +96,30 @@ TEST(GlyphServer, ImageTopicDeliversRenderedGlyphsToSubscribers) {
   ASSERT_TRUE(got);
   EXPECT_EQ(received.width, 80u);
   EXPECT_EQ(received.data, call.response.image.data);
+}
+
+// Parameters are read with errors that name them (in-process, on a private namespace).
+TEST(GlyphServerParameters, BadParametersAreNamed) {
+  const auto message = [](const std::string& name, const auto& value) {
+    ros::NodeHandle nh("~/bad_" + name);
+    nh.setParam(name, value);
+    try {
+      vicc_glyphs::ros_glyph::GlyphServer server(ros::NodeHandle(), nh);
+    } catch (const std::exception& e) {
+      nh.deleteParam(name);
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(message("cache_size", 0).find("~cache_size must be an integer from 1 to 10000"),
+            std::string::npos);
+  EXPECT_NE(message("cache_size", std::string("many")).find("~cache_size"), std::string::npos);
+  EXPECT_NE(message("designs_dir", std::string("/nonexistent")).find("~designs_dir"),
+            std::string::npos);
+  EXPECT_NE(message("designs_dir", 3).find("~designs_dir must be a non-empty string"),
+            std::string::npos);
+  EXPECT_NE(message("perception_model", std::string("/nonexistent.yaml")).find("/nonexistent.yaml"),
+            std::string::npos);
 }
 
 int main(int argc, char** argv) {
