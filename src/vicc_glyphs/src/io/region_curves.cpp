@@ -81,7 +81,8 @@ class CurveBuilder {
   // Clipper's outer boundaries run clockwise on screen (y down) and holes anticlockwise: the
   // region lies on their right, so the reversed path has it on its left. The polygon is refit
   // with cubics between its breaks: corners and the vertices where the colour across changes.
-  DiffusionCurve curve(const Path& path, const Color& color, double tolerance) const {
+  DiffusionCurve curve(const Path& path, const Color& color, double tolerance,
+                       double spacing) const {
     const Path reversed(path.rbegin(), path.rend());
     const int n = static_cast<int>(reversed.size());
     std::vector<Point2> p;
@@ -106,8 +107,16 @@ class CurveBuilder {
     for (std::size_t b = 0; b < breaks.size(); ++b) {
       const int from = breaks[b];
       const int to = b + 1 < breaks.size() ? breaks[b + 1] : breaks[0] + n;
-      std::vector<Point2> piece;
-      for (int i = from; i <= to; ++i) piece.push_back(p[i % n]);
+      // Long edges are sampled densely: the fit controls its error at the points only.
+      std::vector<Point2> piece = {p[from]};
+      for (int i = from + 1; i <= to; ++i) {
+        const Point2& a = p[(i - 1) % n];
+        const Point2& b = p[i % n];
+        const int steps =
+            std::clamp(static_cast<int>(std::ceil((b - a).norm() / spacing)), 1, 4096);
+        for (int k = 1; k <= steps; ++k)
+          piece.push_back(a + (b - a) * (static_cast<double>(k) / steps));
+      }
       const int added =
           fitCubics(piece, tangent(p, corner, from, true), tangent(p, corner, to % n, false),
                     tolerance, curve.control_points);
@@ -176,9 +185,11 @@ DiffusionCurveImage regionCurves(const ResolvedPicture& picture, const IntegerFr
   const CurveBuilder builder(picture, frame);
   // As fine as the flattening: the refit adds at most that much to its error.
   const double tolerance = std::max(width, height) / 8192.0;
+  const double spacing = std::max(width, height) / 256.0;
   for (const ColorRegion& region : picture.regions) {
     for (const Path& path : region.area) {
-      if (path.size() >= 3) image.curves.push_back(builder.curve(path, region.color, tolerance));
+      if (path.size() >= 3)
+        image.curves.push_back(builder.curve(path, region.color, tolerance, spacing));
     }
   }
   return image;
