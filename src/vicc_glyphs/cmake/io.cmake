@@ -54,7 +54,8 @@ target_sources(vicc_glyphs_formats PRIVATE
   src/io/svg_css.cpp
   src/io/svg_paint_server.cpp
   src/io/region_curves.cpp
-  src/io/svg_viewport.cpp)
+  src/io/svg_viewport.cpp
+  src/io/bezier_refit.cpp)
 target_include_directories(vicc_glyphs_formats SYSTEM PRIVATE ${VICC_GLYPHS_POLYCLIPPING_INCLUDE_DIRS})
 target_link_libraries(vicc_glyphs_formats ${VICC_GLYPHS_POLYCLIPPING_LIBRARIES})
 

@@ -1,8 +1,10 @@
 #include "region_curves.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <unordered_map>
 
+#include "bezier_refit.hpp"
 #include "side_colors.hpp"
 
 namespace vicc_glyphs {
@@ -11,6 +13,8 @@ namespace {
 
 // Where a colour change at a vertex takes effect on either side of it (curve parameter).
 constexpr double kColorStep = 1e-3;
+// Polygon vertices turning by more than 30 degrees are corners of the refit curve.
+const double kCornerCosine = std::cos(30.0 * M_PI / 180.0);
 
 struct EdgeKey {
   IntPoint from, to;
@@ -75,31 +79,69 @@ class CurveBuilder {
   }
 
   // Clipper's outer boundaries run clockwise on screen (y down) and holes anticlockwise: the
-  // region lies on their right, so the reversed path has it on its left.
-  DiffusionCurve curve(const Path& path, const Color& color) const {
-    Path reversed(path.rbegin(), path.rend());
-    const std::size_t n = reversed.size();
-    DiffusionCurve curve;
-    std::vector<ColorPoint> right;
-    curve.control_points.push_back(frame_.toPixel(reversed[0]));
-    for (std::size_t i = 0; i < n; ++i) {
-      const IntPoint& a = reversed[i];
-      const IntPoint& b = reversed[(i + 1) % n];
-      const Point2 pa = frame_.toPixel(a);
-      const Point2 pb = frame_.toPixel(b);
-      curve.control_points.insert(curve.control_points.end(),
-                                  {pa + (pb - pa) / 3.0, pa + 2.0 * (pb - pa) / 3.0, pb});
-      const Color across = colorAcross(a, b, pa, pb);
-      right.push_back({i + kColorStep, across});
-      right.push_back({i + 1.0 - kColorStep, across});
+  // region lies on their right, so the reversed path has it on its left. The polygon is refit
+  // with cubics between its breaks: corners and the vertices where the colour across changes.
+  DiffusionCurve curve(const Path& path, const Color& color, double tolerance,
+                       double spacing) const {
+    const Path reversed(path.rbegin(), path.rend());
+    const int n = static_cast<int>(reversed.size());
+    std::vector<Point2> p;
+    for (const IntPoint& q : reversed) p.push_back(frame_.toPixel(q));
+    std::vector<Color> across;  // edge i runs from vertex i to i + 1
+    for (int i = 0; i < n; ++i) {
+      across.push_back(colorAcross(reversed[i], reversed[(i + 1) % n], p[i], p[(i + 1) % n]));
     }
-    const double segments = static_cast<double>(n);
-    curve.left_colors = {{0.0, color}, {segments, color}};
+    std::vector<int> breaks;
+    std::vector<bool> corner(n, false);
+    for (int i = 0; i < n; ++i) {
+      const Point2 in = (p[i] - p[(i + n - 1) % n]).normalized();
+      const Point2 out = (p[(i + 1) % n] - p[i]).normalized();
+      corner[i] = !(in.dot(out) > kCornerCosine);
+      if (corner[i] || across[i] != across[(i + n - 1) % n]) breaks.push_back(i);
+    }
+    if (breaks.empty()) breaks = {0, n / 2};  // a smooth loop of one colour
+    DiffusionCurve curve;
+    curve.control_points.push_back(p[breaks[0]]);
+    std::vector<ColorPoint> right;
+    int segments = 0;
+    for (std::size_t b = 0; b < breaks.size(); ++b) {
+      const int from = breaks[b];
+      const int to = b + 1 < breaks.size() ? breaks[b + 1] : breaks[0] + n;
+      // Long edges are sampled densely: the fit controls its error at the points only.
+      std::vector<Point2> piece = {p[from]};
+      for (int i = from + 1; i <= to; ++i) {
+        const Point2& a = p[(i - 1) % n];
+        const Point2& b = p[i % n];
+        const int steps =
+            std::clamp(static_cast<int>(std::ceil((b - a).norm() / spacing)), 1, 4096);
+        for (int k = 1; k <= steps; ++k)
+          piece.push_back(a + (b - a) * (static_cast<double>(k) / steps));
+      }
+      const int added =
+          fitCubics(piece, tangent(p, corner, from, true), tangent(p, corner, to % n, false),
+                    tolerance, curve.control_points);
+      right.push_back({segments + kColorStep, across[from]});
+      segments += added;
+      right.push_back({segments - kColorStep, across[from]});
+    }
+    curve.left_colors = {{0.0, color}, {static_cast<double>(segments), color}};
     curve.right_colors = reduceColorRuns(right, segments);
     return curve;
   }
 
  private:
+  // Unit tangent at vertex v leaving it (`leaving`) or pointing back from it: one-sided at a
+  // corner, centred elsewhere.
+  static Point2 tangent(const std::vector<Point2>& p, const std::vector<bool>& corner, int v,
+                        bool leaving) {
+    const int n = static_cast<int>(p.size());
+    const Point2& next = p[(v + 1) % n];
+    const Point2& previous = p[(v + n - 1) % n];
+    if (corner[v]) return (leaving ? next - p[v] : previous - p[v]).normalized();
+    const Point2 centred = (next - previous).normalized();
+    return leaving ? centred : Point2(-centred);
+  }
+
   static std::vector<const Paths*> areas(const ResolvedPicture& picture) {
     std::vector<const Paths*> all;
     for (const ColorRegion& region : picture.regions) all.push_back(&region.area);
@@ -141,9 +183,13 @@ DiffusionCurveImage regionCurves(const ResolvedPicture& picture, const IntegerFr
   image.width = width;
   image.height = height;
   const CurveBuilder builder(picture, frame);
+  // As fine as the flattening: the refit adds at most that much to its error.
+  const double tolerance = std::max(width, height) / 8192.0;
+  const double spacing = std::max(width, height) / 256.0;
   for (const ColorRegion& region : picture.regions) {
     for (const Path& path : region.area) {
-      if (path.size() >= 3) image.curves.push_back(builder.curve(path, region.color));
+      if (path.size() >= 3)
+        image.curves.push_back(builder.curve(path, region.color, tolerance, spacing));
     }
   }
   return image;

@@ -148,6 +148,7 @@ class SvgWalker {
       transform = parent_transform * guarded(element, [&] { return parseSvgTransform(attribute); });
     }
     if (!style.mask.empty()) unsupported(element, "mask (" + style.mask + ")");
+    if (!style.unsupported.empty()) unsupported(element, "property '" + style.unsupported + "'");
     if (!style.filter.empty()) unsupported(element, "filter (" + style.filter + ")");
     std::optional<Paths> clip;
     if (!style.clip_path.empty()) clip = clipArea(element, style.clip_path, transform, depth);
@@ -246,7 +247,6 @@ class SvgWalker {
                   const SvgStyle& style, PaintMap& target) {
     const std::vector<Subpath> subpaths = subpathsOf(element, name);
     if (!style.visible || subpaths.empty()) return;
-    if (!style.marker.empty()) unsupported(element, "markers (" + style.marker + ")");
     if (const std::optional<Color> fill = resolvePaint(element, style.fill, style)) {
       const Paths area = guarded(element, [&] {
         return fillArea(transformed(subpaths, transform), style.rule, frame_, tolerance_,

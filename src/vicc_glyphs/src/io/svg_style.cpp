@@ -117,6 +117,17 @@ void applyStroke(const std::string& name, const std::string& value, StrokeGeomet
   }
 }
 
+// Unimplemented properties at values other than their no-effect defaults.
+bool changesThePicture(const std::string& name, const std::string& value) {
+  static const std::map<std::string, std::string> neutral = {
+      {"marker", "none"},           {"marker-start", "none"},  {"marker-mid", "none"},
+      {"marker-end", "none"},       {"vector-effect", "none"}, {"paint-order", "normal"},
+      {"mix-blend-mode", "normal"}, {"transform", "none"},
+  };
+  const auto found = neutral.find(name);
+  return found != neutral.end() && !found->second.empty() && lower(value) != found->second;
+}
+
 std::string unlessNone(const std::string& value) { return value == "none" ? std::string() : value; }
 
 std::string trim(const std::string& text) {
@@ -160,9 +171,8 @@ void apply(const std::string& name, const std::string& raw_value, const SvgStyle
     style.mask = unlessNone(value);
   } else if (name == "filter") {
     style.filter = unlessNone(value);
-  } else if (name == "marker" || name == "marker-start" || name == "marker-mid" ||
-             name == "marker-end") {
-    if (!unlessNone(value).empty()) style.marker = name + ": " + value;
+  } else if (changesThePicture(name, value)) {
+    style.unsupported = name + ": " + value;
   }
 }
 
@@ -187,7 +197,10 @@ const char* const kPresentationAttributes[] = {"fill",
                                                "filter",
                                                "marker-start",
                                                "marker-mid",
-                                               "marker-end"};
+                                               "marker-end",
+                                               "vector-effect",
+                                               "paint-order",
+                                               "mix-blend-mode"};
 
 }  // namespace
 
@@ -200,7 +213,7 @@ SvgStyle cascadeStyle(const tinyxml2::XMLElement& element, const SvgStyle& paren
   style.clip_path.clear();
   style.mask.clear();
   style.filter.clear();
-  style.marker.clear();
+  style.unsupported.clear();
   for (const char* name : kPresentationAttributes) {
     if (const char* value = element.Attribute(name)) apply(name, value, parent, style);
   }

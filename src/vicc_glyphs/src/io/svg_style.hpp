@@ -2,7 +2,9 @@
 // The presentation properties the importer uses, with SVG inheritance and the CSS cascade
 // (presentation attributes < <style> rules < style=""): fill and stroke paints with their
 // opacities, fill-rule, the stroke geometry, color (for currentColor), display, visibility,
-// clip-rule, and the non-inherited opacity, clip-path, mask, filter and markers.
+// clip-rule, and the non-inherited opacity, clip-path, mask and filter. Properties that would
+// change the picture but are not implemented (markers, vector-effect, paint-order,
+// mix-blend-mode, CSS transform) are recorded so that the importer can name them.
 // Properties that do not change a filled or stroked shape (fonts, ...) are ignored.
 
 #include <tinyxml2.h>
@@ -36,10 +38,10 @@ struct SvgStyle {
   bool visible = true;    ///< false for visibility:hidden (inherited, can be overridden)
   // Not inherited:
   double opacity = 1.0;
-  std::string clip_path;  ///< element id of clip-path: url(#id), empty for none
-  std::string mask;       ///< raw value when not none (unsupported)
-  std::string filter;     ///< raw value when not none (unsupported)
-  std::string marker;     ///< raw value of a marker property when not none (unsupported)
+  std::string clip_path;    ///< element id of clip-path: url(#id), empty for none
+  std::string mask;         ///< raw value when not none (unsupported)
+  std::string filter;       ///< raw value when not none (unsupported)
+  std::string unsupported;  ///< "name: value" of an unimplemented property set on this element
 };
 
 /// The style of `element` given its parent's. Throws std::invalid_argument for values it

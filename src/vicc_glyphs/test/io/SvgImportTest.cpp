@@ -11,6 +11,7 @@ namespace {
 
 using test::besideCurve;
 using test::flattenAll;
+using test::flattenCurve;
 using test::winding;
 
 const std::string kIcons = std::string(VICC_GLYPHS_DATA_DIR) + "/icons/";
@@ -59,7 +60,7 @@ INSTANTIATE_TEST_SUITE_P(MaterialDesignIcons, VendoredIcon,
 Eigen::AlignedBox2d boundsOf(const DiffusionCurveImage& image) {
   Eigen::AlignedBox2d box;
   for (const DiffusionCurve& c : image.curves) {
-    for (const Point2& p : c.control_points) box.extend(p);
+    for (const Point2& p : flattenCurve(c)) box.extend(p);
   }
   return box;
 }
@@ -74,8 +75,8 @@ TEST(SvgImport, SizeScalesToRequestedWidth) {
   ASSERT_EQ(big.curves.size(), small.curves.size());
   const Eigen::AlignedBox2d big_box = boundsOf(big);
   const Eigen::AlignedBox2d small_box = boundsOf(small);
-  EXPECT_LT((big_box.min() - 10.0 * small_box.min()).norm(), 0.05);
-  EXPECT_LT((big_box.max() - 10.0 * small_box.max()).norm(), 0.05);
+  EXPECT_LT((big_box.min() - 10.0 * small_box.min()).norm(), 0.1);
+  EXPECT_LT((big_box.max() - 10.0 * small_box.max()).norm(), 0.1);
   // The heart path's lowest point is its tip at y = 21.35.
   EXPECT_NEAR(small_box.max().y(), 21.35, 1e-3);
 }

@@ -225,6 +225,14 @@ TEST(SvgPainting, UnsupportedFeaturesAreNamedOrWarnedAbout) {
   EXPECT_NE(errorMessage(svg("<style>g rect { fill: red }</style><rect width='9' height='9'/>"))
                 .find("CSS selector 'g rect'"),
             std::string::npos);
+  for (const std::string attribute : {"marker-end='url(#m)'", "vector-effect='non-scaling-stroke'",
+                                      "style='transform: scale(2)'", "paint-order='stroke'"}) {
+    const std::string message = errorMessage(svg("<rect width='9' height='9' " + attribute + "/>"));
+    EXPECT_NE(message.find("is not supported"), std::string::npos) << attribute << ": " << message;
+  }
+  EXPECT_NO_THROW(
+      parseSvg(svg("<rect width='9' height='9' vector-effect='none' "
+                   "paint-order='normal' marker-end='none'/>")));
   std::vector<std::string> warnings;
   SvgImportOptions lenient;
   lenient.lenient = true;

@@ -4,9 +4,11 @@
 #include <tinyxml2.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include <gtest/gtest.h>
 
+#include "bezier_refit.hpp"
 #include "paint_map.hpp"
 #include "svg_css.hpp"
 #include "svg_stroke.hpp"
@@ -86,6 +88,32 @@ TEST(SvgPaintMap, TranslucentPaintSplitsAndBlendsWhatLiesBelow) {
   EXPECT_TRUE(has(Color(0.5, 0, 0.5)));
   EXPECT_TRUE(has(Color(0.5, 0.5, 1)));
   EXPECT_TRUE(picture.background.area.empty());
+}
+
+// A flattened quarter circle of radius 100 (400 vertices) comes back as a few cubics that stay
+// within the tolerance of every vertex and of the true circle.
+TEST(SvgBezierRefit, FitsAFlattenedArcWithFewCubicsWithinTolerance) {
+  std::vector<Point2> arc;
+  for (int i = 0; i <= 400; ++i) {
+    const double a = 0.5 * M_PI * i / 400.0;
+    arc.push_back(Point2(100 * std::cos(a), 100 * std::sin(a)));
+  }
+  std::vector<Point2> control_points = {arc.front()};
+  const int segments = fitCubics(arc, Point2(0, 1), Point2(1, 0), 0.01, control_points);
+  EXPECT_GE(segments, 1);
+  EXPECT_LE(segments, 4);
+  ASSERT_EQ(control_points.size(), 3u * segments + 1);
+  EXPECT_LT((control_points.back() - arc.back()).norm(), 1e-12);
+  DiffusionCurve curve;
+  curve.control_points = control_points;
+  for (int k = 0; k <= 1000; ++k) {
+    EXPECT_NEAR(curve.pointAt(segments * k / 1000.0).norm(), 100.0, 0.02) << k;
+  }
+  // A straight run stays one straight segment.
+  std::vector<Point2> line = {Point2(0, 0), Point2(1, 0), Point2(2, 0), Point2(5, 0)};
+  std::vector<Point2> straight = {line.front()};
+  EXPECT_EQ(fitCubics(line, Point2(1, 0), Point2(-1, 0), 0.01, straight), 1);
+  for (const Point2& q : straight) EXPECT_NEAR(q.y(), 0.0, 1e-12);
 }
 
 }  // namespace
