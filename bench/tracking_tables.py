@@ -53,6 +53,8 @@ def main():
           "scaled with the frame interval as T^3); the default with Q derived from the IMU's "
           "figures in Kalibr's layout (`--imu-noise imu/simulated_rig.yaml`). The peer is OpenCV's cv::rgbd::ICPOdometry (contrib rgbd module) with identity "
           "initialisation on the same undistorted frames; it reports no iteration counts.\n")
+    if os.environ.get("BENCH_NOTE"):
+        print(f"Note on this run: {os.environ['BENCH_NOTE']}\n")
     for scenario in scenarios:
         print(f"## {scenario}\n")
         header = "| Frames | | " + " | ".join(f"{LABELS[i]} l={l}" for i in COLUMNS for l in LEVELS) + " |"
