@@ -236,6 +236,20 @@ TEST_F(AvatarDisplayRostest, WithoutTransparencyTheSkinHidesTheParesis) {
   expectHue(opaque, facingPoint("dermatome_L5", Side::kLeft), pain->color, "left L5 pain");
 }
 
+TEST_F(AvatarDisplayRostest, ClickingAStructureShowsItsNameAndRawValues) {
+  show("2023-03-06", {}, BodyView::kFront);
+  const auto* paresis = drawn("paresis", "tibialis_anterior", Side::kRight);
+  ASSERT_NE(paresis, nullptr);
+  // Through the see-through skin, on the muscle the user sees.
+  const Eigen::Vector2f muscle = project(structureCentre("tibialis_anterior", Side::kRight));
+  renderer_->click(static_cast<int>(muscle.x()), static_cast<int>(muscle.y()));
+  EXPECT_EQ(renderer_->display().selectionText(), paresis->overlay_text);
+  EXPECT_NE(paresis->overlay_text.find("MRC"), std::string::npos) << paresis->overlay_text;
+  // A click on the empty background deselects.
+  renderer_->click(5, kHeight - 5);
+  EXPECT_EQ(renderer_->display().selectionText(), "");
+}
+
 TEST_F(AvatarDisplayRostest, BadStatusEntriesAreWarnedAndTheRestIsDrawn) {
   show("2023-03-06", {}, BodyView::kFront);
   vicc_msgs::EncodedStatus status = renderer_->display().lastStatus();
