@@ -64,3 +64,13 @@ target_compile_definitions(vicc_avatar_snapshot_test PRIVATE ${VICC_TEST_DEFINIT
   VICC_AVATAR_SNAPSHOT="$<TARGET_FILE:vicc_avatar_snapshot>")
 target_link_libraries(vicc_avatar_snapshot_test vicc_anatomy_viz_core Qt5::Gui gtest_main)
 add_dependencies(vicc_avatar_snapshot_test vicc_avatar_snapshot vicc_anatomy_viz_rviz)
+
+# The avatar model on the default MakeHuman skin (built once per test binary, ~1 s).
+catkin_add_gtest(vicc_anatomy_viz_avatar_test
+  test/avatar/AvatarManifestTest.cpp
+  test/avatar/AvatarModelTest.cpp
+  test/avatar/AvatarReportTest.cpp
+  test/avatar/DermatomeLabellingTest.cpp)
+target_compile_options(vicc_anatomy_viz_avatar_test PRIVATE ${VICC_WARNINGS})
+target_compile_definitions(vicc_anatomy_viz_avatar_test PRIVATE ${VICC_TEST_DEFINITIONS})
+target_link_libraries(vicc_anatomy_viz_avatar_test vicc_anatomy_viz_avatar gtest_main)

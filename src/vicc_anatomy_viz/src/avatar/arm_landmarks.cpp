@@ -101,6 +101,56 @@ int stationAtLength(const LimbTrack& track, float length) {
   return index;
 }
 
+/// Sections across the hand at `fraction` of wrist -> fingertip: the loops near the axis.
+std::vector<Eigen::Vector3f> handLoopCentres(const TriangleMesh& skin, const Eigen::Vector3f& wrist,
+                                             const Eigen::Vector3f& fingertip, float fraction,
+                                             float reach, std::vector<float>* areas) {
+  const Eigen::Vector3f axis = (fingertip - wrist).normalized();
+  const SectionPlane plane =
+      SectionPlane::through(wrist + fraction * (fingertip - wrist), axis, Eigen::Vector3f::UnitZ());
+  std::vector<Eigen::Vector3f> centres;
+  for (const SectionLoop& loop : sliceMesh(skin, plane)) {
+    if (loop.centroid.norm() > reach || loop.area < 2e-5) continue;  // not this hand's digits
+    centres.push_back(plane.lift(loop.centroid));
+    if (areas) areas->push_back(static_cast<float>(loop.area));
+  }
+  return centres;
+}
+
+/// The thumb: the first digit that parts from the palm going from the wrist to the fingertip;
+/// the little finger: of the four digits across the proximal phalanges, the one furthest from
+/// the thumb.
+void findDigits(const TriangleMesh& skin, Side side, BodyLandmarks& landmarks) {
+  const Eigen::Vector3f& wrist = landmarks.point(sided("wrist", side));
+  const Eigen::Vector3f& fingertip = landmarks.point(sided("fingertip", side));
+  const float reach = 0.05f * landmarks.height;
+  for (float fraction = 0.2f; fraction < 0.6f; fraction += 0.025f) {
+    std::vector<float> areas;
+    const std::vector<Eigen::Vector3f> centres =
+        handLoopCentres(skin, wrist, fingertip, fraction, reach, &areas);
+    if (centres.size() != 2) continue;
+    // The smaller of palm and thumb is the thumb.
+    landmarks.points[sided("thumb", side)] = areas[0] < areas[1] ? centres[0] : centres[1];
+    break;
+  }
+  if (!landmarks.points.count(sided("thumb", side))) {
+    throw ConfigError("avatar landmarks: no " + toString(side) + " thumb apart from the palm");
+  }
+  const Eigen::Vector3f& thumb = landmarks.point(sided("thumb", side));
+  for (float fraction = 0.55f; fraction < 0.85f; fraction += 0.025f) {
+    const std::vector<Eigen::Vector3f> digits =
+        handLoopCentres(skin, wrist, fingertip, fraction, reach, nullptr);
+    if (digits.size() < 4) continue;
+    Eigen::Vector3f little = digits.front();
+    for (const Eigen::Vector3f& digit : digits) {
+      if ((digit - thumb).norm() > (little - thumb).norm()) little = digit;
+    }
+    landmarks.points[sided("little_finger", side)] = little;
+    return;
+  }
+  throw ConfigError("avatar landmarks: no " + toString(side) + " fingers apart");
+}
+
 void findArm(const TriangleMesh& skin, Side side, BodyLandmarks& landmarks) {
   const float height = landmarks.height;
   const Eigen::Vector3f upper = horizontalCentre(skin, landmarks.armpit_z - 0.015f * height, side);
@@ -131,6 +181,7 @@ void findArm(const TriangleMesh& skin, Side side, BodyLandmarks& landmarks) {
   landmarks.points[sided("wrist", side)] = track.centres[wrist];
   landmarks.points[sided("fingertip", side)] = track.centres.back();
   landmarks.arm_tracks[sideIndex(side)] = std::move(track);
+  findDigits(skin, side, landmarks);
 }
 
 }  // namespace

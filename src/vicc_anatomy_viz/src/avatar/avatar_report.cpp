@@ -89,7 +89,7 @@ void writeReport(const AvatarBuild& build, std::ostream& out) {
   }
   out << "structures (" << model.structures.size() << "): id side fma vertices volume_cm3 proxy\n";
   for (const AvatarStructure& structure : model.structures) {
-    out << "  " << std::left << std::setw(28) << structure.structure_id << std::setw(6)
+    out << "  " << std::left << std::setw(32) << structure.structure_id << std::setw(6)
         << toString(structure.side) << std::setw(11)
         << (structure.fma_id.empty() ? "-" : structure.fma_id) << std::right << std::setw(6)
         << structure.mesh.vertices.size() << std::setw(9) << signedVolume(structure.mesh) * 1e6

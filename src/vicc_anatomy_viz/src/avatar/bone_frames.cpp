@@ -35,6 +35,19 @@ BoneFrame frame(const Eigen::Vector3f& proximal, const Eigen::Vector3f& distal,
   return bone;
 }
 
+/// The hand as in the anatomical position: lateral is the thumb's (radial) side, anterior the
+/// palm, which for a left hand is axis x radial (right: the opposite), whatever the pose.
+BoneFrame handFrame(const Eigen::Vector3f& wrist, const Eigen::Vector3f& fingertip,
+                    const Eigen::Vector3f& thumb, Side side) {
+  BoneFrame bone;
+  bone.proximal = wrist;
+  bone.distal = fingertip;
+  bone.axis = (fingertip - wrist).normalized();
+  bone.lateral = perpendicular(thumb - wrist, bone.axis).normalized();
+  bone.anterior = (sideSign(side) * bone.axis.cross(bone.lateral)).normalized();
+  return bone;
+}
+
 }  // namespace
 
 BoneFrame BodyLandmarks::bone(const std::string& segment, Side side) const {
@@ -64,10 +77,8 @@ BoneFrame BodyLandmarks::bone(const std::string& segment, Side side) const {
   if (segment == "forearm") {
     return frame(elbow, wrist, bent ? Eigen::Vector3f(shoulder - elbow) : forward, side);
   }
-  if (segment == "hand") {
-    const BoneFrame forearm = bone("forearm", side);
-    return frame(wrist, point(sided("fingertip", side)), forearm.anterior, side);
-  }
+  if (segment == "hand")
+    return handFrame(wrist, point(sided("fingertip", side)), point(sided("thumb", side)), side);
   throw ConfigError("avatar landmarks: unknown bone segment '" + segment + "'");
 }
 

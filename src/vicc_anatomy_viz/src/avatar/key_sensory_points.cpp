@@ -80,9 +80,13 @@ void placeArmPoints(const TriangleMesh& skin, Side side, BodyLandmarks& landmark
       Eigen::Vector3f::UnitZ(), key("C4"));
   p[key("C5")] = fromBone(skin, landmarks, "upper_arm", side, 0.93f, 60, key("C5"));
   p[key("T1")] = fromBone(skin, landmarks, "upper_arm", side, 0.93f, -60, key("T1"));
-  p[key("C6")] = fromBone(skin, landmarks, "hand", side, 0.35f, 120, key("C6"));
-  p[key("C7")] = fromBone(skin, landmarks, "hand", side, 0.6f, 180, key("C7"));
-  p[key("C8")] = fromBone(skin, landmarks, "hand", side, 0.55f, -100, key("C8"));
+  // C6, C7, C8: the dorsal surface of the proximal phalanx of thumb, middle and little finger.
+  const BoneFrame hand = landmarks.bone("hand", side);
+  const Eigen::Vector3f dorsal = -hand.anterior;
+  p[key("C6")] = skinPointToward(skin, landmarks.point(sided("thumb", side)), dorsal, key("C6"));
+  p[key("C7")] = skinPointToward(skin, hand.at(0.62f), dorsal, key("C7"));
+  p[key("C8")] =
+      skinPointToward(skin, landmarks.point(sided("little_finger", side)), dorsal, key("C8"));
   p[key("T2")] = skinPointToward(skin, shoulder, -Eigen::Vector3f::UnitZ(), key("T2"));
 }
 
@@ -112,7 +116,7 @@ void placeLegPoints(const TriangleMesh& skin, Side side, BodyLandmarks& landmark
       -Eigen::Vector3f::UnitX(), key("S3"));
   // Perianal: S5 next to the anus, S4 a little further out (both ISNCSCI "S4-5").
   for (const auto& [level, offset] :
-       {std::pair<std::string, float>{"S5", 0.006f}, std::pair<std::string, float>{"S4", 0.02f}}) {
+       {std::pair<std::string, float>{"S5", 0.004f}, std::pair<std::string, float>{"S4", 0.012f}}) {
     const Eigen::Vector3f inside(landmarks.point("pelvis").x(), sideSign(side) * offset * height,
                                  landmarks.crotch_z + 0.015f * height);
     p[key(level)] = skinPointToward(skin, inside, Eigen::Vector3f(-1, 0, -1), key(level));
@@ -128,8 +132,11 @@ void placeTrunkPoints(const TriangleMesh& skin, Side side, BodyLandmarks& landma
   const Eigen::Vector3f& head = landmarks.point("head_centre");
   p[key("C2")] = skinPointToward(skin, Eigen::Vector3f(head.x(), sign * 0.01f * height, head.z()),
                                  -Eigen::Vector3f::UnitX(), key("C2"));
-  p[key("C3")] =
-      trunkFront(skin, landmarks, midclavicular, shoulder.z() + 0.025f * height, key("C3"));
+  // The supraclavicular fossa: the top of the shoulder girdle just in front of the trapezius
+  // at the midclavicular line, seen from inside the chest.
+  const Eigen::Vector3f below_fossa(landmarks.point("pelvis").x() + 0.02f * height, midclavicular,
+                                    shoulder.z());
+  p[key("C3")] = skinPointToward(skin, below_fossa, Eigen::Vector3f::UnitZ(), key("C3"));
   const float nipple_z = nippleHeight(skin, height, midclavicular);
   const float umbilicus_z = landmarks.point("umbilicus").z();
   const float step = (nipple_z - umbilicus_z) / 6;
@@ -162,8 +169,8 @@ void findTrunkPoints(const TriangleMesh& skin, BodyLandmarks& landmarks) {
 
 void placeKeySensoryPoints(const TriangleMesh& skin, BodyLandmarks& landmarks) {
   for (Side side : {Side::kLeft, Side::kRight}) {
-    placeTrunkPoints(skin, side, landmarks);
     placeArmPoints(skin, side, landmarks);
+    placeTrunkPoints(skin, side, landmarks);
     placeLegPoints(skin, side, landmarks);
   }
 }

@@ -15,14 +15,16 @@ namespace {
 constexpr int kStations = 18;  // along the axis, the two ends are the spindle's tips
 constexpr int kRingPoints = 14;
 constexpr float kProfileExponent = 0.6f;  // < 1: a full belly tapering into short tendons
-constexpr int kMaxShrinkSteps = 24;
+constexpr int kBisectionSteps = 14;
+constexpr float kMaxRingGrowth = 1.2f;
 
 /// One station of the spindle: the skin cross-section and the ring placed in it.
 struct Station {
   SectionPlane plane;
-  Eigen::Vector2f centre;  ///< the ring centre in plane coordinates
-  Eigen::Vector2f radial;  ///< unit, towards the azimuth
-  float skin_radius = 0;   ///< axis to skin along `radial`
+  SectionLoop skin_section;  ///< the skin's contour around the axis
+  Eigen::Vector2f centre;    ///< the ring centre in plane coordinates
+  Eigen::Vector2f radial;    ///< unit, towards the azimuth
+  float skin_radius = 0;     ///< axis to skin along `radial`
 };
 
 Station stationAt(const TriangleMesh& skin, const BoneFrame& bone, const GeneratedShape& shape,
@@ -31,9 +33,11 @@ Station stationAt(const TriangleMesh& skin, const BoneFrame& bone, const Generat
   station.plane = SectionPlane::through(bone.at(fraction), bone.axis, bone.anterior);
   const std::vector<SectionLoop> loops = sliceMesh(skin, station.plane);
   const SectionLoop* loop = loopContaining(loops, Eigen::Vector2f::Zero());
-  if (!loop)
+  if (!loop) {
     throw ConfigError(what + ": the " + shape.bone + " axis leaves the skin at " +
                       std::to_string(fraction));
+  }
+  station.skin_section = *loop;
   const Eigen::Vector3f direction = bone.direction(shape.azimuth);
   station.radial =
       Eigen::Vector2f(direction.dot(station.plane.u), direction.dot(station.plane.v)).normalized();
@@ -42,28 +46,50 @@ Station stationAt(const TriangleMesh& skin, const BoneFrame& bone, const Generat
   return station;
 }
 
-/// The ring of a station, shrunk until every point is `margin` inside the skin section.
-std::vector<Eigen::Vector3f> ringAt(const TriangleMesh& skin, const Station& station,
-                                    const GeneratedShape& shape, float profile, float margin) {
-  const std::vector<SectionLoop> loops = sliceMesh(skin, station.plane);
-  const SectionLoop* loop = loopContaining(loops, Eigen::Vector2f::Zero());
+/// The ring of a station with radial half-thickness `radial_half`, in plane coordinates.
+std::vector<Eigen::Vector2f> ringPoints(const Station& station, const GeneratedShape& shape,
+                                        float radial_half) {
   const Eigen::Vector2f tangential(-station.radial.y(), station.radial.x());
-  float radial_half = shape.thickness * station.skin_radius * profile;
   std::vector<Eigen::Vector2f> ring(kRingPoints);
-  for (int attempt = 0; attempt <= kMaxShrinkSteps; ++attempt) {
-    bool inside = true;
-    for (int k = 0; k < kRingPoints; ++k) {
-      const float angle = 2.0f * static_cast<float>(M_PI) * k / kRingPoints;
-      ring[k] = station.centre + radial_half * std::cos(angle) * station.radial +
-                shape.width * radial_half * std::sin(angle) * tangential;
-      inside = inside && loop->contains(ring[k]) && loop->distanceToContour(ring[k]) >= margin;
-    }
-    if (inside) break;
-    radial_half *= 0.85f;
+  for (int k = 0; k < kRingPoints; ++k) {
+    const float angle = 2.0f * static_cast<float>(M_PI) * k / kRingPoints;
+    ring[k] = station.centre + radial_half * std::cos(angle) * station.radial +
+              shape.width * radial_half * std::sin(angle) * tangential;
   }
-  std::vector<Eigen::Vector3f> lifted;
-  for (const Eigen::Vector2f& point : ring) lifted.push_back(station.plane.lift(point));
-  return lifted;
+  return ring;
+}
+
+/// The largest radial half-thickness up to `full` whose ring lies `margin` inside the skin's
+/// section (bisection: a continuous result, so that left and right stay mirror images).
+float fittedHalfThickness(const Station& station, const GeneratedShape& shape, float full,
+                          float margin) {
+  const auto fits = [&](float radial_half) {
+    for (const Eigen::Vector2f& point : ringPoints(station, shape, radial_half)) {
+      if (!station.skin_section.contains(point) ||
+          station.skin_section.distanceToContour(point) < margin) {
+        return false;
+      }
+    }
+    return true;
+  };
+  if (fits(full)) return full;
+  float low = 0, high = full;
+  for (int step = 0; step < kBisectionSteps; ++step) {
+    const float middle = (low + high) / 2;
+    (fits(middle) ? low : high) = middle;
+  }
+  return low;
+}
+
+/// Where the skin forced a ring smaller, its neighbours shrink too (by at most kMaxRingGrowth
+/// per station), so that the muscle narrows smoothly instead of showing a notch.
+void smoothRadii(std::vector<float>& radii) {
+  for (std::size_t k = 2; k + 1 < radii.size(); ++k) {
+    radii[k] = std::min(radii[k], radii[k - 1] * kMaxRingGrowth);
+  }
+  for (std::size_t k = radii.size() - 2; k-- > 1;) {
+    radii[k] = std::min(radii[k], radii[k + 1] * kMaxRingGrowth);
+  }
 }
 
 void addTriangle(TriangleMesh& mesh, int a, int b, int c) { mesh.triangles.emplace_back(a, b, c); }
@@ -74,18 +100,26 @@ TriangleMesh generateSpindle(const TriangleMesh& skin, const BodyLandmarks& land
                              const GeneratedShape& shape, Side side, float margin,
                              const std::string& what) {
   const BoneFrame bone = landmarks.bone(shape.bone, side);
-  TriangleMesh mesh;
+  std::vector<Station> stations;
+  std::vector<float> radii;
   for (int s = 0; s <= kStations; ++s) {
     const float t = static_cast<float>(s) / kStations;
-    const Station station =
-        stationAt(skin, bone, shape, shape.from + t * (shape.to - shape.from), what);
+    stations.push_back(
+        stationAt(skin, bone, shape, shape.from + t * (shape.to - shape.from), what));
+    const float profile = std::pow(std::sin(static_cast<float>(M_PI) * t), kProfileExponent);
+    const float full = shape.thickness * stations.back().skin_radius * profile;
+    radii.push_back(fittedHalfThickness(stations.back(), shape, full, margin));
+  }
+  smoothRadii(radii);
+  TriangleMesh mesh;
+  for (int s = 0; s <= kStations; ++s) {
+    const Station& station = stations[s];
     if (s == 0 || s == kStations) {
       mesh.vertices.push_back(station.plane.lift(station.centre));
       continue;
     }
-    const float profile = std::pow(std::sin(static_cast<float>(M_PI) * t), kProfileExponent);
-    for (const Eigen::Vector3f& point : ringAt(skin, station, shape, profile, margin)) {
-      mesh.vertices.push_back(point);
+    for (const Eigen::Vector2f& point : ringPoints(station, shape, radii[s])) {
+      mesh.vertices.push_back(station.plane.lift(point));
     }
   }
   // Vertex 0 is the proximal tip, then (kStations - 1) rings, then the distal tip.

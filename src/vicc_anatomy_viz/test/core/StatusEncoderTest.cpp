@@ -284,7 +284,8 @@ TEST(StatusEncoderTest, TransparencyEncodesLevelsAsAlpha) {
 
 TEST(StatusEncoderTest, RecordsThatNoLongerFitAreLeftOutWithANote) {
   Examination examination = examinationOf(
-      {finding("paresis", "soleus", Side::kLeft, {{"muscle_strength", Value::number(2)}}),
+      {finding("paresis", "tibialis_posterior", Side::kLeft,
+               {{"muscle_strength", Value::number(2)}}),
        finding("paresis", "gastrocnemius", Side::kLeft, {{"muscle_strength", Value::number(9)}}),
        finding("paresis", "gastrocnemius", Side::kRight, {{"muscle_strength", Value::number(2)}})});
   const EncodedStatus status = encode(examination);

@@ -1,0 +1,220 @@
+// The default avatar: REP-103 orientation and size, structures under the skin, left/right
+// symmetry, hierarchy and FMA ids, proxies on the skin.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "avatar_test_support.hpp"
+#include "vicc_anatomy_viz/avatar/mesh_geometry.hpp"
+
+namespace vicc_anatomy_viz::avatar {
+namespace {
+
+using test::defaultAvatar;
+
+TEST(AvatarModelTest, SkinIsTheMakeHumanBodyStandingInRep103) {
+  const AvatarModel& model = defaultAvatar().model;
+  EXPECT_EQ(model.skin.vertices.size(), 13380u);  // duplicate (seam) vertices merged
+  EXPECT_EQ(model.skin.triangles.size(), 26756u);
+  float lowest = 1e9f, highest = -1e9f;
+  for (const Eigen::Vector3f& v : model.skin.vertices) {
+    lowest = std::min(lowest, v.z());
+    highest = std::max(highest, v.z());
+  }
+  EXPECT_NEAR(lowest, 0.0f, 1e-6f);
+  EXPECT_NEAR(highest, 1.66f, 0.01f);
+  EXPECT_GT(signedVolume(model.skin), 0.04);  // outward triangles, ~55 litres
+  EXPECT_LT(signedVolume(model.skin), 0.08);
+}
+
+TEST(AvatarModelTest, BodyFacesPlusXWithItsLeftAtPlusY) {
+  const BodyLandmarks& landmarks = defaultAvatar().landmarks;
+  for (const std::string side : {"left", "right"}) {
+    // Toes in front of the ankle, the heel just behind it.
+    EXPECT_GT(landmarks.point("toe_tip_" + side).x() - landmarks.point("ankle_" + side).x(), 0.12f);
+    EXPECT_LT(landmarks.point("ankle_" + side).x() - landmarks.point("heel_" + side).x(), 0.08f);
+    // The navel and the nipples are on the front of the trunk.
+    EXPECT_GT(landmarks.point("key_T4_" + side).x(), landmarks.point("key_S3_" + side).x() + 0.15f);
+  }
+  EXPECT_GT(landmarks.point("umbilicus").x(), landmarks.point("pelvis").x() + 0.05f);
+  EXPECT_GT(landmarks.point("hip_left").y(), 0.05f);
+  EXPECT_LT(landmarks.point("hip_right").y(), -0.05f);
+}
+
+TEST(AvatarModelTest, JointCentresAreInsideTheSkinInAnatomicalOrder) {
+  const AvatarBuild& build = defaultAvatar();
+  const BodyLandmarks& landmarks = build.landmarks;
+  for (const std::string side : {"left", "right"}) {
+    for (const std::string joint : {"shoulder", "elbow", "wrist", "hip", "knee", "ankle", "mtp"}) {
+      EXPECT_NEAR(windingNumber(build.model.skin, landmarks.point(joint + "_" + side)), 1.0, 0.01)
+          << joint << " " << side;
+    }
+    EXPECT_GT(landmarks.point("hip_" + side).z(), landmarks.point("knee_" + side).z() + 0.3f);
+    EXPECT_GT(landmarks.point("knee_" + side).z(), landmarks.point("ankle_" + side).z() + 0.3f);
+    EXPECT_GT(landmarks.point("shoulder_" + side).z(), landmarks.point("elbow_" + side).z() + 0.1f);
+    const float forearm =
+        (landmarks.point("wrist_" + side) - landmarks.point("elbow_" + side)).norm();
+    EXPECT_NEAR(forearm / landmarks.height, 0.146f, 0.03f);  // Drillis & Contini proportion
+  }
+}
+
+TEST(AvatarModelTest, EveryGeneratedStructureLiesUnderTheSkin) {
+  const AvatarModel& model = defaultAvatar().model;
+  for (const AvatarStructure& structure : model.structures) {
+    ASSERT_FALSE(structure.mesh.vertices.empty()) << structure.display_name;
+    EXPECT_GT(signedVolume(structure.mesh), 0) << structure.display_name;
+    // Every 12th vertex: all ring positions over the stations (14 per ring) in ~1 s.
+    for (std::size_t i = 0; i < structure.mesh.vertices.size(); i += 12) {
+      const Eigen::Vector3f& vertex = structure.mesh.vertices[i];
+      ASSERT_GT(windingNumber(model.skin, vertex), 0.5)
+          << structure.display_name << " vertex " << i;
+      ASSERT_GT(distanceToSurface(model.skin, vertex), 0.001f) << structure.display_name;
+    }
+  }
+}
+
+TEST(AvatarModelTest, MusclesAreSpindlesAlongTheirBoneNotBoxes) {
+  const AvatarModel& model = defaultAvatar().model;
+  const AvatarStructure* quadriceps = model.structure("quadriceps_femoris", Side::kLeft);
+  ASSERT_NE(quadriceps, nullptr);
+  const BoneFrame thigh = defaultAvatar().landmarks.bone("thigh", Side::kLeft);
+  // Thin at both ends, thickest in the middle.
+  float low = 1e9f, high = -1e9f;
+  for (const Eigen::Vector3f& v : quadriceps->mesh.vertices) {
+    const float along = (v - thigh.proximal).dot(thigh.axis);
+    low = std::min(low, along);
+    high = std::max(high, along);
+  }
+  EXPECT_GT(high - low, 0.6f * thigh.length());
+  EXPECT_GT(signedVolume(quadriceps->mesh) * 1e6, 300.0);  // cm^3
+}
+
+TEST(AvatarModelTest, LeftAndRightStructuresAreMirrorImages) {
+  const AvatarModel& model = defaultAvatar().model;
+  int pairs = 0;
+  for (const AvatarStructure& left : model.structures) {
+    if (left.side != Side::kLeft) continue;
+    const AvatarStructure* right = model.structure(left.structure_id, Side::kRight);
+    ASSERT_NE(right, nullptr) << left.structure_id;
+    // The patient's left is +y (a finding on the wrong side is the worst error).
+    Eigen::Vector3f left_centre = Eigen::Vector3f::Zero(), right_centre = Eigen::Vector3f::Zero();
+    for (const Eigen::Vector3f& v : left.mesh.vertices) left_centre += v;
+    for (const Eigen::Vector3f& v : right->mesh.vertices) right_centre += v;
+    EXPECT_GT(left_centre.y(), 0) << left.structure_id;
+    EXPECT_LT(right_centre.y(), 0) << left.structure_id;
+    ASSERT_EQ(right->mesh.vertices.size(), left.mesh.vertices.size());
+    // The mirror image of every left vertex is (nearly) a right vertex; the ring order is
+    // reversed by the mirroring, so vertices are matched by position.
+    for (const Eigen::Vector3f& vertex : left.mesh.vertices) {
+      const Eigen::Vector3f mirrored(vertex.x(), -vertex.y(), vertex.z());
+      float nearest = 1e9f;
+      for (const Eigen::Vector3f& candidate : right->mesh.vertices) {
+        nearest = std::min(nearest, (candidate - mirrored).norm());
+      }
+      ASSERT_LT(nearest, 0.002f) << left.structure_id;
+    }
+    ++pairs;
+  }
+  EXPECT_GE(pairs, 20);
+}
+
+TEST(AvatarModelTest, StructuresCarryHierarchyFmaIdsAndDisplayNames) {
+  const AvatarModel& model = defaultAvatar().model;
+  const AvatarStructure* tibialis = model.structure("tibialis_anterior", Side::kRight);
+  ASSERT_NE(tibialis, nullptr);
+  EXPECT_EQ(tibialis->fma_id, "FMA:22532");
+  EXPECT_EQ(tibialis->structure_class, "muscle");
+  EXPECT_EQ(tibialis->display_name, "M. tibialis anterior (right)");
+  EXPECT_EQ(tibialis->hierarchy, (std::vector<std::string>{"body", "lower limb", "muscular system",
+                                                           "M. tibialis anterior"}));
+  for (const AvatarStructure& structure : model.structures) {
+    const Structure* catalogued = test::catalog().structure(structure.structure_id);
+    ASSERT_NE(catalogued, nullptr);
+    EXPECT_EQ(structure.fma_id, catalogued->fma_id);
+    if (structure.structure_class == "muscle") {
+      EXPECT_FALSE(structure.fma_id.empty());
+    }
+    EXPECT_EQ(structure.hierarchy.size(), 4u);
+  }
+  EXPECT_EQ(model.structure("urethra", Side::kLeft), nullptr);
+  EXPECT_NE(model.structure("urethra", Side::kNone), nullptr);
+}
+
+TEST(AvatarModelTest, EveryCataloguedMuscleTendonAndOrganIsInTheModel) {
+  const AvatarModel& model = defaultAvatar().model;
+  for (const Structure& structure : test::catalog().structures()) {
+    if (structure.class_id == "dermatome") continue;
+    const bool midline =
+        test::catalog().structureClass(structure.class_id)->laterality == Laterality::kMidline;
+    for (Side side :
+         midline ? std::vector<Side>{Side::kNone} : std::vector<Side>{Side::kLeft, Side::kRight}) {
+      EXPECT_NE(model.structure(structure.id, side), nullptr)
+          << structure.id << " " << toString(side);
+    }
+  }
+}
+
+TEST(AvatarModelTest, IssueElevenStructuresAreAllThereOnBothSides) {
+  // ISNCSCI key muscles C5-T1 and L2-S1, the other named muscles, the reflex tendons.
+  for (const std::string id : {"biceps_brachii",
+                               "brachialis",
+                               "extensor_carpi_radialis_longus",
+                               "triceps_brachii",
+                               "flexor_digitorum_profundus",
+                               "abductor_digiti_minimi",
+                               "iliopsoas",
+                               "quadriceps_femoris",
+                               "tibialis_anterior",
+                               "extensor_hallucis_longus",
+                               "gastrocnemius",
+                               "soleus",
+                               "biceps_femoris",
+                               "semitendinosus",
+                               "gluteus_maximus",
+                               "deltoid",
+                               "flexor_carpi_radialis",
+                               "flexor_carpi_ulnaris",
+                               "biceps_brachii_tendon",
+                               "brachioradialis_tendon",
+                               "triceps_brachii_tendon",
+                               "patellar_ligament",
+                               "calcaneal_tendon"}) {
+    for (Side side : {Side::kLeft, Side::kRight}) {
+      EXPECT_NE(defaultAvatar().model.structure(id, side), nullptr) << id << " " << toString(side);
+    }
+  }
+  EXPECT_NE(defaultAvatar().model.structure("external_anal_sphincter", Side::kNone), nullptr);
+}
+
+TEST(AvatarModelTest, SmallStructuresHaveProxiesOnTheSkinAboveThem) {
+  const AvatarBuild& build = defaultAvatar();
+  for (const AvatarStructure& structure : build.model.structures) {
+    const bool small = test::catalog().structureClass(structure.structure_class)->proxy;
+    EXPECT_EQ(structure.has_proxy, small) << structure.display_name;
+    if (!structure.has_proxy) continue;
+    EXPECT_LT(distanceToSurface(build.model.skin, structure.proxy.centre), 0.001f);
+    EXPECT_NEAR(structure.proxy.normal.norm(), 1.0f, 1e-4f);
+    EXPECT_GT(structure.proxy.radius, 0.005f);
+    // Outward: a step along the normal leaves the body.
+    EXPECT_LT(
+        windingNumber(build.model.skin, structure.proxy.centre + 0.01f * structure.proxy.normal),
+        0.5);
+  }
+  // The proxy is on the skin over its structure (within a few centimetres of it).
+  for (const AvatarStructure& structure : build.model.structures) {
+    if (!structure.has_proxy) continue;
+    float nearest = 1e9f;
+    for (const Eigen::Vector3f& v : structure.mesh.vertices) {
+      nearest = std::min(nearest, (v - structure.proxy.centre).norm());
+    }
+    EXPECT_LT(nearest, 0.07f) << structure.display_name;
+  }
+  // The patellar reflex proxy sits on the patella: front of the knee.
+  const AvatarStructure* patellar = build.model.structure("patellar_ligament", Side::kLeft);
+  const Eigen::Vector3f& knee = build.landmarks.point("knee_left");
+  EXPECT_GT(patellar->proxy.centre.x(), knee.x() + 0.03f);
+  EXPECT_NEAR(patellar->proxy.centre.z(), knee.z(), 0.05f);
+}
+
+}  // namespace
+}  // namespace vicc_anatomy_viz::avatar
