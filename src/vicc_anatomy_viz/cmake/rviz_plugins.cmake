@@ -45,3 +45,8 @@ add_executable(vicc_avatar_snapshot src/tools/vicc_avatar_snapshot.cpp)
 target_compile_options(vicc_avatar_snapshot PRIVATE ${VICC_WARNINGS})
 target_link_libraries(vicc_avatar_snapshot vicc_avatar_snapshot_lib vicc_anatomy_viz_ros)
 install(TARGETS vicc_avatar_snapshot RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})
+
+# Benchmark (bench/avatar): FPS while orbiting the avatar.
+add_executable(vicc_avatar_fps bench/avatar/vicc_avatar_fps.cpp)
+target_compile_options(vicc_avatar_fps PRIVATE ${VICC_WARNINGS})
+target_link_libraries(vicc_avatar_fps vicc_avatar_snapshot_lib vicc_anatomy_viz_ros)

@@ -226,6 +226,7 @@ void AvatarDisplay::updateLegend() {
 }
 
 void AvatarDisplay::showSelection(const std::string& text) {
+  selection_text_ = text;
   std::vector<OverlayLine> lines;
   std::istringstream stream(text);
   std::string line;

@@ -1,5 +1,6 @@
 #include "vicc_anatomy_viz/rviz/see_through_stencil.hpp"
 
+#include <OGRE/OgreMaterialManager.h>
 #include <OGRE/OgreRenderSystem.h>
 #include <OGRE/OgreRoot.h>
 
@@ -24,7 +25,12 @@ void setStencil(Ogre::CompareFunction compare, Ogre::StencilOperation pass_opera
 void SeeThroughStencil::renderQueueStarted(Ogre::uint8 queue, const Ogre::String& /*invocation*/,
                                            bool& skip) {
   Ogre::RenderSystem& render_system = *Ogre::Root::getSingleton().getRenderSystem();
-  if (queue == kSkinSeeThroughQueue) skip = !enabled_;
+  // rviz's selection renders the scene with the "Pick..." material schemes, painting what has
+  // no pick handle (the skin) black: without the see-through skin there, a click on the
+  // see-through part reaches the encoded structure the user sees.
+  const bool picking =
+      Ogre::MaterialManager::getSingleton().getActiveScheme().rfind("Pick", 0) == 0;
+  if (queue == kSkinSeeThroughQueue) skip = !enabled_ || picking;
   if (!enabled_) return;
   switch (queue) {
     case kEncodedQueue:

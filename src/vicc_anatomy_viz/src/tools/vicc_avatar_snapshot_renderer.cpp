@@ -8,6 +8,7 @@
 #include <rviz/properties/property.h>
 #include <rviz/properties/vector_property.h>
 #include <rviz/render_panel.h>
+#include <rviz/selection/selection_manager.h>
 #include <rviz/view_controller.h>
 #include <rviz/view_manager.h>
 #include <rviz/visualization_manager.h>
@@ -125,6 +126,12 @@ QImage AvatarRenderer::grab() {
   for (int y = 0; y < height; ++y)
     std::copy_n(&pixels[static_cast<std::size_t>(y) * width * 3], width * 3, image.scanLine(y));
   return image;
+}
+
+void AvatarRenderer::click(int x, int y) {
+  manager_->getSelectionManager()->select(panel_->getViewport(), x, y, x + 1, y + 1,
+                                          rviz::SelectionManager::Replace);
+  spin(0.05);
 }
 
 avatar_view::CameraModel AvatarRenderer::camera() const {

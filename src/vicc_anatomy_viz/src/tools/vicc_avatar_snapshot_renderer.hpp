@@ -47,6 +47,8 @@ class AvatarRenderer {
   void renderFrame(float wall_dt = 0.f);
   /// Renders and reads the window back.
   QImage grab();
+  /// A click of rviz's Select tool at a pixel (rviz's SelectionManager picks and selects).
+  void click(int x, int y);
   /// The camera of the last rendered frame.
   avatar_view::CameraModel camera() const;
 

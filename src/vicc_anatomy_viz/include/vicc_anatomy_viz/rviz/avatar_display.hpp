@@ -47,6 +47,8 @@ class AvatarDisplay : public rviz::Display {
   const std::string& modelError() const { return model_error_; }
   unsigned drawnStatusCount() const { return drawn_status_count_; }
   const avatar_view::AvatarDrawState& drawState() const { return draw_state_; }
+  /// The text overlay of the structure clicked last ("" when none is selected).
+  const std::string& selectionText() const { return selection_text_; }
   /// The last status received (empty before the first).
   vicc_msgs::EncodedStatus lastStatus() const {
     return last_msg_ ? *last_msg_ : vicc_msgs::EncodedStatus();
@@ -82,7 +84,8 @@ class AvatarDisplay : public rviz::Display {
 
   ros::Subscriber subscriber_;
   std::shared_ptr<const avatar::AvatarModel> model_;
-  std::string model_error_;  ///< why the model did not load, "" when it did
+  std::string model_error_;
+  std::string selection_text_;  ///< why the model did not load, "" when it did
   std::unique_ptr<AvatarVisual> visual_;
   std::unique_ptr<ScreenOverlay> legend_;
   std::unique_ptr<ScreenOverlay> selection_;

@@ -15,10 +15,12 @@
 namespace vicc_anatomy_viz::rviz_plugin {
 
 /// Render queue groups, in drawing order (see SeeThroughStencil): encoded inner structures,
-/// context structures, the skin (opaque, then see-through), skin marks (regions, proxies).
+/// the opaque skin, context structures (after the skin, so the depth test drops them where
+/// the skin hides them: most of their pixels are never shaded), the see-through skin, skin
+/// marks (regions, proxies).
 constexpr unsigned char kEncodedQueue = 60;
-constexpr unsigned char kContextQueue = 61;
-constexpr unsigned char kSkinQueue = 62;
+constexpr unsigned char kSkinQueue = 61;
+constexpr unsigned char kContextQueue = 62;
 constexpr unsigned char kSkinSeeThroughQueue = 63;
 constexpr unsigned char kSkinMarkQueue = 64;
 
