@@ -5,7 +5,6 @@ find_package(rviz REQUIRED)
 find_package(pluginlib REQUIRED)
 find_package(Qt5 REQUIRED COMPONENTS Widgets)
 find_package(X11 REQUIRED)
-set(CMAKE_AUTOMOC ON)
 
 add_library(vicc_anatomy_viz_rviz
   include/vicc_anatomy_viz/rviz/avatar_display.hpp
@@ -18,6 +17,8 @@ add_library(vicc_anatomy_viz_rviz
   src/rviz/see_through_stencil.cpp
   src/rviz/structure_selection.cpp
 )
+# moc only for the Qt library (not for every later target of the package).
+set_target_properties(vicc_anatomy_viz_rviz PROPERTIES AUTOMOC ON)
 target_compile_options(vicc_anatomy_viz_rviz PRIVATE ${VICC_WARNINGS})
 target_include_directories(vicc_anatomy_viz_rviz SYSTEM PUBLIC ${rviz_INCLUDE_DIRS}
   ${pluginlib_INCLUDE_DIRS})
