@@ -25,7 +25,7 @@ class IconWaves : public ::testing::TestWithParam<Waveform> {};
 
 TEST_P(IconWaves, CountsAmplitudesAndNoCrossingsOnRealIcons) {
   int decidable = 0;
-  for (const char* icon : {"water.svg", "heart.svg", "star.svg"}) {
+  for (const char* icon : {"water.svg", "heart.svg", "star.svg", "pill.svg"}) {
     const DiffusionCurveImage original = loadDiffusionCurves(kIcons + icon, 256);
     DiffusionCurveImage image = original;
     const WaveSpec spec{GetParam(), 0.4, 0.6};  // 4 waves per 10 mm, 0.6 mm on a 50 mm glyph
@@ -47,7 +47,9 @@ TEST_P(IconWaves, CountsAmplitudesAndNoCrossingsOnRealIcons) {
     EXPECT_EQ(check.new_crossings, 0) << icon;
   }
   // Where self-intersection prevention cut a run of knot points to 15-60 % (the star's concave
-  // corners, the drop's tip, the heart's notch) the lobe count is not decidable.
+  // corners, the drop's tip, the heart's notch) the lobe count is not decidable; with the
+  // Clipper-based SVG import that holds for every rectangle wave on the first three, so the
+  // capsule (no narrow part) keeps the count checked for every waveform.
   EXPECT_GE(decidable, 1);
 }
 
