@@ -7,10 +7,6 @@
 // Arguments: REPLAY_LAUNCH BAG TRUTH.tum SCENARIO (the scenario the bag was simulated from).
 #include <gtest/gtest.h>
 
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -23,6 +19,7 @@
 #include <sensor_msgs/point_cloud2_iterator.h>
 #include <Eigen/Geometry>
 
+#include "roslaunch_child.hpp"
 #include "vicc_tracking/sim/scenario.hpp"
 #include "vicc_tracking/sim/scene.hpp"
 #include "vicc_tracking/trajectory_error.hpp"
@@ -72,28 +69,6 @@ vicc_tracking::TimedPose timedPoseOf(const nav_msgs::Odometry& odom) {
   return timed;
 }
 
-/// Spins until `done` holds or `limit` (wall time) has passed; `done` is called once a round.
-template <typename Condition>
-bool spinUntil(Condition done, ros::WallDuration limit) {
-  const ros::WallTime deadline = ros::WallTime::now() + limit;
-  while (ros::ok() && ros::WallTime::now() < deadline) {
-    if (done()) return true;
-    ros::spinOnce();
-    ros::WallDuration(0.05).sleep();
-  }
-  return false;
-}
-
-/// Runs roslaunch as a child process; returns its pid (0 if it could not be started).
-pid_t startRoslaunch(const std::vector<std::string>& arguments) {
-  std::vector<char*> argv;
-  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return 0;
-  return pid;
-}
-
 class ReplayScan : public ::testing::Test {
  protected:
   ReplayScan() {
@@ -109,17 +84,12 @@ class ReplayScan : public ::testing::Test {
   /// Runs replay.launch to its end; false (and a failure) if it did not end or failed.
   void replayToTheEnd() {
     const pid_t roslaunch =
-        startRoslaunch({"roslaunch", g_program_args[0], "bag:=" + g_program_args[1], "rviz:=false",
-                        "exit_at_end:=true"});
+        vicc_test::startRoslaunch({"roslaunch", g_program_args[0], "bag:=" + g_program_args[1],
+                                   "rviz:=false", "exit_at_end:=true"});
     ASSERT_NE(roslaunch, 0) << "roslaunch could not be started";
     int wait_status = 0;
     const bool ended =
-        spinUntil([&] { return waitpid(roslaunch, &wait_status, WNOHANG) == roslaunch; },
-                  ros::WallDuration(120.0));
-    if (!ended) {
-      kill(roslaunch, SIGINT);
-      waitpid(roslaunch, &wait_status, 0);
-    }
+        vicc_test::waitForChildExit(roslaunch, ros::WallDuration(120.0), wait_status);
     ASSERT_TRUE(ended) << "replay.launch did not end with the recording";
     EXPECT_TRUE(WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0)
         << "roslaunch failed, wait status " << wait_status;

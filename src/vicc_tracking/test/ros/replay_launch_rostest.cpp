@@ -7,10 +7,6 @@
 //     itself (arguments: the launch file, the bag), as a rostest would be torn down too.
 #include <gtest/gtest.h>
 
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -18,6 +14,7 @@
 #include <ros/ros.h>
 #include <vicc_msgs/TrackingStatus.h>
 
+#include "roslaunch_child.hpp"
 #include "wait_for_recording_end.hpp"
 
 extern char** environ;
@@ -30,19 +27,6 @@ bool nodeIsRegistered(const std::string& name) {
   std::vector<std::string> nodes;
   if (!ros::master::getNodes(nodes)) return false;
   return std::find(nodes.begin(), nodes.end(), name) != nodes.end();
-}
-
-/// Spins until `done` holds or `limit` (wall time) has passed. `done` is called once per
-/// round, so it may have side effects (waitpid reports an exit only once).
-template <typename Condition>
-bool spinUntil(Condition done, ros::WallDuration limit) {
-  const ros::WallTime deadline = ros::WallTime::now() + limit;
-  while (ros::ok() && ros::WallTime::now() < deadline) {
-    if (done()) return true;
-    ros::spinOnce();
-    ros::WallDuration(0.05).sleep();
-  }
-  return false;
 }
 
 class ReplayLaunch : public ::testing::Test {
@@ -68,38 +52,23 @@ TEST_F(ReplayLaunch, StaysUpAfterTheRecordingEnds) {
   // short_test: 2 s still phase (initializing), then ~4 s of motion at 15 Hz, all tracked.
   EXPECT_GT(tracked_, 40u) << "the tracker did not track the replayed recording";
   EXPECT_EQ(lost_, 0u);
-  ASSERT_TRUE(spinUntil([] { return !nodeIsRegistered("/player"); }, ros::WallDuration(30.0)))
+  ASSERT_TRUE(
+      vicc_test::spinUntil([] { return !nodeIsRegistered("/player"); }, ros::WallDuration(30.0)))
       << "the player did not finish the recording";
   // A required player would have ended the whole launch (and this test) by now.
   ros::WallDuration(3.0).sleep();
   EXPECT_TRUE(nodeIsRegistered("/tracker")) << "the tracker ended with the recording";
 }
 
-/// Runs roslaunch as a child process; returns its pid (0 if it could not be started).
-pid_t startRoslaunch(const std::vector<std::string>& arguments) {
-  std::vector<char*> argv;
-  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return 0;
-  return pid;
-}
-
 TEST_F(ReplayLaunch, EndsWithThePlayer) {
   ASSERT_EQ(g_program_args.size(), 2u) << "usage: replay_launch_rostest LAUNCH_FILE BAG";
   const pid_t roslaunch =
-      startRoslaunch({"roslaunch", g_program_args[0], "bag:=" + g_program_args[1], "rviz:=false",
-                      "exit_at_end:=true"});
+      vicc_test::startRoslaunch({"roslaunch", g_program_args[0], "bag:=" + g_program_args[1],
+                                 "rviz:=false", "exit_at_end:=true"});
   ASSERT_NE(roslaunch, 0) << "roslaunch could not be started";
 
   int wait_status = 0;
-  const bool ended =
-      spinUntil([&] { return waitpid(roslaunch, &wait_status, WNOHANG) == roslaunch; },
-                ros::WallDuration(120.0));
-  if (!ended) {
-    kill(roslaunch, SIGINT);
-    waitpid(roslaunch, &wait_status, 0);
-  }
+  const bool ended = vicc_test::waitForChildExit(roslaunch, ros::WallDuration(120.0), wait_status);
   ASSERT_TRUE(ended) << "the launch did not end with the recording";
   EXPECT_TRUE(WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0)
       << "roslaunch failed, wait status " << wait_status;
