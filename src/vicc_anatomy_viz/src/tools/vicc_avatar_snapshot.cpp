@@ -1,7 +1,7 @@
 // vicc_avatar_snapshot: a patient's encoded status rendered by the real rviz and AvatarDisplay
 // into a PNG (see vicc_avatar_snapshot_options.hpp for the command line). Exit codes: 0 PNG
 // written, 2 bad command line, 3 patient/date/database problem, 4 no display server,
-// 5 rendering failed.
+// 5 rendering failed, 6 PNG written but incomplete (an encoded finding could not be drawn).
 #include <ros/ros.h>
 #include <unistd.h>
 #include <vicc_msgs/EncodedStatus.h>
@@ -84,8 +84,13 @@ void render(const snapshot::SnapshotOptions& options, const vicc_msgs::EncodedSt
   const QImage image = renderer.grab();
   if (!image.save(QString::fromStdString(options.out), "PNG"))
     throw Failure(5, "cannot write " + options.out);
-  for (const std::string& warning : renderer.display().drawState().warnings)
+  const std::vector<std::string>& warnings = renderer.display().drawState().warnings;
+  for (const std::string& warning : warnings)
     std::cerr << "vicc_avatar_snapshot: warning: " << warning << "\n";
+  // A picture that leaves out a finding must not pass as the patient's status.
+  if (!warnings.empty())
+    throw Failure(6, options.out + " is incomplete: " + std::to_string(warnings.size()) +
+                         " problem(s) drawing the encoded status (see the warnings above)");
 }
 
 int run(int argc, char** argv) {

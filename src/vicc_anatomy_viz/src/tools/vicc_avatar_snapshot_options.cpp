@@ -8,7 +8,10 @@ namespace vicc_anatomy_viz::snapshot {
 
 const char* const kSnapshotUsage =
     "usage: vicc_avatar_snapshot --db FILE --patient ID [--date D] "
-    "[--view front|back|left|right] [--hide CAT,...] [--size WxH] --out FILE.png";
+    "[--view front|back|left|right] [--hide CAT,...] [--size WxH] --out FILE.png\n"
+    "exit: 0 written, 2 bad command line, 3 unknown patient / date before the first "
+    "examination / unreadable database, 4 no display server, 5 rendering failed, 6 written "
+    "but incomplete (an encoded finding could not be drawn)";
 
 namespace {
 
