@@ -49,6 +49,10 @@ struct EkfConfig {
   /// backward difference of Eq. 5.10 as printed, which lags half an inter-frame interval.
   bool imu_aided_virtual_velocity = true;
   void validate() const;
+
+  /// The thesis's noise values (5.4.4; config/tracker_thesis.yaml): Q and R diagonals,
+  /// P0 = 1e-4 I, one fixed R whatever the frame interval.
+  static EkfConfig thesisNoise();
 };
 
 struct EkfState {

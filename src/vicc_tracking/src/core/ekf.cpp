@@ -7,10 +7,10 @@
 namespace vicc_tracking {
 namespace {
 
-constexpr int kQ = 0;   // q   at 0..3
-constexpr int kV = 4;   // v   at 4..6
-constexpr int kP = 7;   // p   at 7..9
-constexpr int kQb = 10; // q_b at 10..13
+constexpr int kQ = 0;    // q   at 0..3
+constexpr int kV = 4;    // v   at 4..6
+constexpr int kP = 7;    // p   at 7..9
+constexpr int kQb = 10;  // q_b at 10..13
 
 Matrix14d blockDiagonal(double rotation, double velocity, double position, double base) {
   Vector14d diagonal;
@@ -21,16 +21,31 @@ Matrix14d blockDiagonal(double rotation, double velocity, double position, doubl
 
 }  // namespace
 
+EkfConfig EkfConfig::thesisNoise() {
+  EkfConfig config;
+  config.process_noise_rotation = 1e-5;
+  config.process_noise_velocity = 1e-2;
+  config.process_noise_position = 1e-1;
+  config.process_noise_base = 1e-5;
+  config.measurement_noise_rotation = 1e-3;
+  config.measurement_noise_velocity = 1e-6;
+  config.measurement_noise_position = 1e-5;
+  config.measurement_noise_base = 1e-13;
+  config.initial_covariance = 1e-4;
+  config.measurement_noise_interval_exponent = 0.0;
+  return config;
+}
+
 void EkfConfig::validate() const {
-  const double values[] = {process_noise_rotation,     process_noise_velocity,
-                           process_noise_position,     process_noise_base,
-                           measurement_noise_rotation, measurement_noise_velocity,
-                           measurement_noise_position, measurement_noise_base,
-                           initial_covariance};
+  const double values[] = {
+      process_noise_rotation,     process_noise_velocity,     process_noise_position,
+      process_noise_base,         measurement_noise_rotation, measurement_noise_velocity,
+      measurement_noise_position, measurement_noise_base,     initial_covariance};
   for (double value : values) {
     if (!(value > 0.0) || !std::isfinite(value)) {
-      throw std::invalid_argument("ekf: every noise variance and the initial covariance must be "
-                                  "finite and > 0");
+      throw std::invalid_argument(
+          "ekf: every noise variance and the initial covariance must be "
+          "finite and > 0");
     }
   }
   if (!(measurement_noise_reference_interval > 0.0) ||
@@ -127,17 +142,16 @@ void InitializationEkf::correct(const Vector14d& measurement, double interval_dt
 
   // Eq. 5.20: with h(x) = x the gain is K = P (P + R)^-1.
   const Matrix14d innovation_covariance = covariance_ + measurementNoise(interval_dt);
-  const Matrix14d gain =
-      innovation_covariance.ldlt().solve(covariance_.transpose()).transpose();
+  const Matrix14d gain = innovation_covariance.ldlt().solve(covariance_.transpose()).transpose();
   const Vector14d x = state_.toVector();
-  state_ = EkfState::fromVector(x + gain * (z - x));                     // Eq. 5.21
-  covariance_ = (Matrix14d::Identity() - gain) * covariance_;            // Eq. 5.22
-  covariance_ = 0.5 * (covariance_ + covariance_.transpose());          // keep it symmetric
+  state_ = EkfState::fromVector(x + gain * (z - x));            // Eq. 5.21
+  covariance_ = (Matrix14d::Identity() - gain) * covariance_;   // Eq. 5.22
+  covariance_ = 0.5 * (covariance_ + covariance_.transpose());  // keep it symmetric
 }
 
 Matrix14d InitializationEkf::resetJacobian(const Quat4& previous_icp_orientation) const {
   Matrix14d jacobian = Matrix14d::Zero();
-  jacobian.block<3, 3>(kV, kV) = Eigen::Matrix3d::Identity();                    // Eq. 5.27
+  jacobian.block<3, 3>(kV, kV) = Eigen::Matrix3d::Identity();                          // Eq. 5.27
   jacobian.block<4, 4>(kQb, kQ) = leftMultiplicationMatrix(previous_icp_orientation);  // 5.29
   return jacobian;
 }
@@ -145,10 +159,10 @@ Matrix14d InitializationEkf::resetJacobian(const Quat4& previous_icp_orientation
 void InitializationEkf::reset(const Quat4& previous_icp_orientation) {
   const Matrix14d jacobian = resetJacobian(previous_icp_orientation);
   EkfState next;
-  next.q = identityQuat();                                                 // Eq. 5.26
-  next.v = state_.v;                                                       // Eq. 5.27
-  next.p = Eigen::Vector3d::Zero();                                        // Eq. 5.28
-  next.q_b = multiply(previous_icp_orientation, state_.q).normalized();    // Eq. 5.29
+  next.q = identityQuat();                                               // Eq. 5.26
+  next.v = state_.v;                                                     // Eq. 5.27
+  next.p = Eigen::Vector3d::Zero();                                      // Eq. 5.28
+  next.q_b = multiply(previous_icp_orientation, state_.q).normalized();  // Eq. 5.29
   state_ = next;
 
   // Eq. 5.30; the cleared frame-to-frame parts restart with the P0 diagonal of Eq. 5.8.

@@ -14,12 +14,14 @@ const Eigen::Vector3d kGravityMap(0.0, 0.0, -9.80665);
 
 /// Analytic motion from rest: constant body angular velocity, constant map acceleration.
 struct AnalyticMotion {
-  Eigen::Quaterniond start = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()));
+  Eigen::Quaterniond start =
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()));
   Eigen::Vector3d body_rate{0.3, -0.2, 0.5};
   Eigen::Vector3d acceleration{0.5, -0.3, 0.2};
 
   Eigen::Quaterniond orientation(double t) const {
-    return start * Eigen::Quaterniond(Eigen::AngleAxisd(body_rate.norm() * t, body_rate.normalized()));
+    return start *
+           Eigen::Quaterniond(Eigen::AngleAxisd(body_rate.norm() * t, body_rate.normalized()));
   }
   Eigen::Vector3d position(double t) const { return 0.5 * acceleration * t * t; }
   /// Noise-free REP-145 reading at the start of [t, t + dt], held over the step (the
@@ -38,20 +40,7 @@ Eigen::Quaterniond fromQuat(const Quat4& q) { return Eigen::Quaterniond(q[0], q[
 
 /// The thesis's values (config/tracker_thesis.yaml): R far below P, so a correction lands
 /// (almost) on the measurement, which the mechanics tests below use.
-EkfConfig thesisNoise() {
-  EkfConfig config;
-  config.process_noise_rotation = 1e-5;
-  config.process_noise_velocity = 1e-2;
-  config.process_noise_position = 1e-1;
-  config.process_noise_base = 1e-5;
-  config.measurement_noise_rotation = 1e-3;
-  config.measurement_noise_velocity = 1e-6;
-  config.measurement_noise_position = 1e-5;
-  config.measurement_noise_base = 1e-13;
-  config.initial_covariance = 1e-4;
-  config.measurement_noise_interval_exponent = 0.0;
-  return config;
-}
+EkfConfig thesisNoise() { return EkfConfig::thesisNoise(); }
 
 InitializationEkf makeEkf(const EkfConfig& config = thesisNoise()) {
   ImuCalibration calibration;  // no bias; at rest the IMU reads +g in the map

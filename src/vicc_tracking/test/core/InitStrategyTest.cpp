@@ -63,17 +63,7 @@ InitContext makeContext() {
 /// virtual measurement, so the guess shows the measurement's error.
 InitContext thesisNoiseContext() {
   InitContext context = makeContext();
-  EkfConfig& ekf = context.ekf;
-  ekf.process_noise_rotation = 1e-5;
-  ekf.process_noise_velocity = 1e-2;
-  ekf.process_noise_position = 1e-1;
-  ekf.process_noise_base = 1e-5;
-  ekf.measurement_noise_rotation = 1e-3;
-  ekf.measurement_noise_velocity = 1e-6;
-  ekf.measurement_noise_position = 1e-5;
-  ekf.measurement_noise_base = 1e-13;
-  ekf.initial_covariance = 1e-4;
-  ekf.measurement_noise_interval_exponent = 0.0;
+  context.ekf = EkfConfig::thesisNoise();
   return context;
 }
 
