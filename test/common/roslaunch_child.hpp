@@ -28,11 +28,11 @@ bool spinUntil(Condition done, ros::WallDuration limit) {
   return false;
 }
 
-/// Runs roslaunch (`arguments[0]` looked up on PATH) as a child process; its pid, 0 if it
-/// could not be started. With `output_file`, the child's stdout and stderr go there (the test
-/// reads what it printed).
-inline pid_t startRoslaunch(const std::vector<std::string>& arguments,
-                            const std::string& output_file = "") {
+/// Runs `arguments[0]` (looked up on PATH: roslaunch, rosrun) as a child process; its pid, 0
+/// if it could not be started. With `output_file`, the child's stdout and stderr go there (the
+/// test reads what it printed).
+inline pid_t startProcess(const std::vector<std::string>& arguments,
+                          const std::string& output_file = "") {
   std::vector<char*> argv;
   for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
   argv.push_back(nullptr);
@@ -47,6 +47,11 @@ inline pid_t startRoslaunch(const std::vector<std::string>& arguments,
   const int result = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   return result == 0 ? pid : 0;
+}
+
+inline pid_t startRoslaunch(const std::vector<std::string>& arguments,
+                            const std::string& output_file = "") {
+  return startProcess(arguments, output_file);
 }
 
 /// Sends SIGINT (Ctrl-C) to the child and waits up to `limit` for it to exit; true if it did.

@@ -7,12 +7,17 @@
 //   DemoTracks: the replayed recording is tracked on /fusion/odom.
 //   RvizLoadsAllPlugins: rviz (under Xvfb, its output in the file given by ~rviz_log)
 //     subscribes to the scan's and the avatar's topics, and printed no error.
+//   ClinicStopsOnSigint (argument: CLINIC_LAUNCH): runs clinic.launch itself on a database of
+//     its own, records an examination, sends SIGINT: roslaunch ends with exit code 0 within
+//     10 s, and the database passes `vicc_patient check` and holds the new examination.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
@@ -21,9 +26,14 @@
 #include "roslaunch_child.hpp"
 #include "vicc_msgs/GetEncodedStatus.h"
 #include "vicc_msgs/ListPatients.h"
+#include "vicc_msgs/RecordExamination.h"
 #include "vicc_msgs/RenderGlyph.h"
 
+extern char** environ;
+
 namespace {
+
+std::vector<std::string> g_program_args;  // positional, after gtest and ros::init removed theirs
 
 const ros::Duration kServiceWait(90.0);  // the sample database is imported on first start
 // Poses on /fusion/odom since the start: subscribed before the first test, so a replay that
@@ -115,11 +125,86 @@ TEST(GraphServices, RvizLoadsAllPlugins) {
   EXPECT_TRUE(vicc_test::nodeIsRegistered("/rviz")) << "rviz ended";
 }
 
+std::string readFile(const std::string& path) {
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+/// Runs `command` to its end; what it printed, and its exit code in `exit_code` (-1 if it
+/// did not end normally within a minute).
+std::string run(const std::vector<std::string>& command, const std::string& output,
+                int& exit_code) {
+  const pid_t child = vicc_test::startProcess(command, output);
+  int wait_status = 0;
+  exit_code = -1;
+  if (child != 0 && vicc_test::waitForChildExit(child, ros::WallDuration(60.0), wait_status) &&
+      WIFEXITED(wait_status))
+    exit_code = WEXITSTATUS(wait_status);
+  return readFile(output);
+}
+
+TEST(GraphServices, ClinicStopsOnSigint) {
+  ASSERT_EQ(g_program_args.size(), 1u) << "usage: graph_services_rostest CLINIC_LAUNCH";
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("vicc_clinic_sigint_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string db = (dir / "sample.db").string();
+  const std::string log = (dir / "roslaunch.log").string();
+  const pid_t roslaunch = vicc_test::startRoslaunch(
+      {"roslaunch", g_program_args[0], "rviz:=false", "sample_db:=" + db}, log);
+  ASSERT_NE(roslaunch, 0) << "roslaunch could not be started";
+  const bool up =
+      ros::service::waitForService("/patient_status_server/record_examination", kServiceWait);
+  EXPECT_TRUE(up) << readFile(log);
+
+  vicc_msgs::RecordExamination record;
+  record.request.patient_id = "SDH-046";
+  record.request.taken_at = "2023-03-20T08:00:00Z";
+  vicc_msgs::Finding finding;
+  finding.category = "paresis";
+  finding.structure_id = "tibialis_anterior";
+  finding.side = "right";
+  vicc_msgs::PropertyValue strength;
+  strength.prop_type = "muscle_strength";
+  strength.value = "5";
+  finding.values.push_back(strength);
+  record.request.findings.push_back(finding);
+  EXPECT_TRUE(up && ros::service::call("/patient_status_server/record_examination", record));
+  EXPECT_TRUE(record.response.success) << record.response.message;
+
+  int wait_status = 0;
+  const bool ended = vicc_test::interruptChild(roslaunch, ros::WallDuration(10.0), wait_status);
+  const std::string printed = readFile(log);
+  EXPECT_TRUE(ended) << "roslaunch did not end within 10 s of SIGINT:\n" << printed;
+  EXPECT_TRUE(WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0)
+      << "wait status " << wait_status << "\n"
+      << printed;
+  EXPECT_EQ(printed.find("escalating"), std::string::npos) << printed;
+  EXPECT_EQ(printed.find("has died"), std::string::npos) << printed;
+
+  int exit_code = 0;
+  const std::string check = run({"rosrun", "vicc_anatomy_viz", "vicc_patient", "check", "--db", db},
+                                (dir / "check.log").string(), exit_code);
+  EXPECT_EQ(exit_code, 0) << "the database is not consistent after SIGINT:\n" << check;
+  const std::string list = run({"rosrun", "vicc_anatomy_viz", "vicc_patient", "list", "--db", db},
+                               (dir / "list.log").string(), exit_code);
+  EXPECT_EQ(exit_code, 0) << list;
+  EXPECT_NE(list.find("SDH-046"), std::string::npos) << list;
+  EXPECT_NE(list.find("2023-03-20"), std::string::npos)
+      << "the examination recorded before SIGINT is not in the database:\n"
+      << list;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "graph_services_rostest");
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]).rfind("--", 0) != 0) g_program_args.emplace_back(argv[i]);
   ros::NodeHandle nh;
   const ros::Subscriber odom = nh.subscribe("/fusion/odom", 1000, &countPose);
   return RUN_ALL_TESTS();
