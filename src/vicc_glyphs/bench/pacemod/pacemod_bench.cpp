@@ -4,7 +4,7 @@
 // amplitudes measured from the distance to the original contour (wave_measurement.hpp), and
 // all polygons are checked for crossings. Prints Markdown tables (see README.md here).
 // Usage: vicc_glyphs_pacemod_bench [ICON_DIR] [--quick] [--verbose] [--stretch-at-corners]
-//        [--opencv-labels]
+//        [--opencv-labels] [--waveform sine|triangle|sawtooth|rectangle] [--no-render]
 
 #include <algorithm>
 #include <cstdio>
@@ -38,6 +38,7 @@ double threadMilliseconds() {
 }
 
 bool verbose = false;
+bool render_glyphs = true;  // --no-render: checks only (faster searches for failures)
 WaveOptions options;
 
 struct Totals {
@@ -65,7 +66,7 @@ void runGlyph(const fs::path& icon, const WaveSpec& spec, DiffusionCurveRenderer
   const std::vector<CurveWaveReport> reports =
       applyWaves(image, selectCurves(image, {}), spec, kSizeMm, options);
   const double render_start = threadMilliseconds();
-  renderer.render(image, RenderOptions{}, result);
+  if (render_glyphs) renderer.render(image, RenderOptions{}, result);
   const double end = threadMilliseconds();
   totals.modify_ms.push_back(render_start - modify_start);
   totals.render_ms.push_back(end - render_start);
@@ -116,6 +117,7 @@ void printRow(const std::string& label, const Totals& t) {
 int main(int argc, char** argv) {
   fs::path dir = VICC_GLYPHS_DATA_DIR "/icons";
   bool quick = false;
+  std::string only_waveform;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--quick") {
@@ -124,6 +126,10 @@ int main(int argc, char** argv) {
       verbose = true;
     } else if (arg == "--stretch-at-corners") {
       options.stretch_at_corners = true;
+    } else if (arg == "--no-render") {
+      render_glyphs = false;
+    } else if (arg == "--waveform" && i + 1 < argc) {
+      only_waveform = argv[++i];
     } else if (arg == "--opencv-labels") {
       options.feature_transform = FeatureTransform::OpenCvLabels;
     } else {
@@ -146,6 +152,7 @@ int main(int argc, char** argv) {
   printHeader("waveform, waves/10 mm, amplitude mm");
   for (Waveform waveform :
        {Waveform::Sine, Waveform::Triangle, Waveform::Sawtooth, Waveform::Rectangle}) {
+    if (!only_waveform.empty() && waveformName(waveform) != only_waveform) continue;
     for (double f : frequencies) {
       for (double a : amplitudes) {
         const WaveSpec spec{waveform, f / 10.0, a};

@@ -108,14 +108,37 @@ Polyline sampleWave(const ContourWave& wave, std::vector<double>& parameters) {
   return line;
 }
 
-// Halves the caps of the knot points within half a period of arc length `u` (cyclically).
+// Cyclic arc-length distance between two points of a closed contour.
+double cyclicDistance(double a, double b, double length) {
+  const double d = std::abs(a - b);
+  return std::min(d, length - d);
+}
+
+// Halves the caps of the knot points within half a period of arc length `u` (cyclically), or
+// sets them to 0 in the last round. A crossing can persist with every knot point of that window
+// already at 0: the curve between knot points (a neighbouring lobe's flank overshooting into a
+// thin spike, the swallowtail at a sharp icon corner) makes it. Then the window widens by half
+// periods until it reaches knot points with amplitude left, so that repeated rounds flatten the
+// contour around the crossing outward until the crossing is gone (at worst the whole contour).
 void capAround(WavedContour& contour, double u, bool last_round) {
   const WaveLayout& layout = contour.wave->layout;
   const double half_period = 0.5 * layout.length / layout.wave_count;
+  auto applied = [&](std::size_t i) {
+    return std::min(contour.caps[i], contour.wave->guarded[i].amplitude);
+  };
+  double window = half_period;
+  for (;;) {
+    bool reducible = false;
+    for (std::size_t i = 0; i < layout.peaks.size(); ++i) {
+      reducible |= cyclicDistance(layout.peaks[i].arc_length, u, layout.length) <= window &&
+                   applied(i) > 0.0;
+    }
+    if (reducible || window >= 0.5 * layout.length) break;
+    window += half_period;
+  }
   for (std::size_t i = 0; i < layout.peaks.size(); ++i) {
-    const double d = std::abs(layout.peaks[i].arc_length - u);
-    if (std::min(d, layout.length - d) > half_period) continue;
-    contour.caps[i] = last_round ? 0.0 : 0.5 * contour.wave->guarded[i].amplitude;
+    if (cyclicDistance(layout.peaks[i].arc_length, u, layout.length) > window) continue;
+    contour.caps[i] = last_round ? 0.0 : std::min(contour.caps[i], 0.5 * applied(i));
   }
   contour.caps.back() = contour.caps.front() = std::min(contour.caps.front(), contour.caps.back());
 }
@@ -125,7 +148,8 @@ std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
                                    std::map<int, std::unique_ptr<WavedContour>>& waved,
                                    const Context& context) {
   std::map<int, int> left;
-  for (int round = 0; round <= kMaxRepairRounds; ++round) {
+  const int last_round = kMaxRepairRounds + kMaxFlatteningRounds;
+  for (int round = 0; round <= last_round; ++round) {
     std::vector<Polyline> lines;
     std::vector<std::vector<double>> parameters(image.curves.size());
     for (int i = 0; i < static_cast<int>(image.curves.size()); ++i) {
@@ -140,9 +164,9 @@ std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
       for (const SegmentRef& side : {crossing.a, crossing.b}) {
         ++left[side.line];
         const auto found = waved.find(side.line);
-        if (found == waved.end() || round == kMaxRepairRounds) continue;
+        if (found == waved.end() || round == last_round) continue;
         capAround(*found->second, parameters[side.line][side.segment],
-                  round + 1 == kMaxRepairRounds);
+                  round + 1 >= kMaxRepairRounds);
         changed[side.line] = true;
       }
     }
