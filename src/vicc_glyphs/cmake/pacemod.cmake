@@ -64,6 +64,7 @@ if(CATKIN_ENABLE_TESTING)
     test/pacemod/SkeletonGuardTest.cpp
     test/pacemod/ContourWavesTest.cpp
     test/pacemod/OffsetContourTest.cpp
+    test/pacemod/PolylineTest.cpp
   )
   target_compile_options(vicc_glyphs_pacemod_test PRIVATE ${VICC_WARNINGS})
   target_compile_definitions(vicc_glyphs_pacemod_test PRIVATE

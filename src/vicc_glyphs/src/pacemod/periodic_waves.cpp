@@ -18,11 +18,15 @@ namespace {
 
 constexpr double kMinQuarterPeriodPx = 0.5;
 constexpr int kSamplesPerSpan = 16;  // as dense as the bench's polygon check
+// Bucket size of the crossing search, px: high-frequency waves put hundreds of their dense
+// samples into an 8 px cell, and each bucket's pairs are tested.
+constexpr double kCrossingCellPx = 2.0;
 
 // A curve being waved: its spline form, arc-length table, current wave and amplitude caps.
 struct WavedContour {
   bspline::SplineDiffusionCurve spline;
   std::unique_ptr<bspline::ArcLengthTable> table;
+  std::unique_ptr<ContourFrame> frame;  ///< built once, the same for every repair round
   std::unique_ptr<ContourWave> wave;
   std::vector<double> caps;
   CurveWaveReport report;
@@ -51,9 +55,14 @@ void checkArguments(const DiffusionCurveImage& image, const std::vector<int>& cu
 }
 
 void build(WavedContour& contour, const Context& context) {
-  contour.wave = std::make_unique<ContourWave>(modifyContour(
-      contour.spline.geometry, *contour.table, context.spec.waveform, contour.report.wave_count,
-      context.spec.amplitude_mm * context.px_per_mm, context.guard, contour.caps));
+  if (!contour.frame) {
+    contour.frame = std::make_unique<ContourFrame>(contourFrame(
+        contour.spline.geometry, *contour.table, context.spec.waveform, contour.report.wave_count));
+  }
+  contour.wave = std::make_unique<ContourWave>(
+      modifyContour(*contour.frame, contour.spline.geometry, *contour.table,
+                    context.spec.amplitude_mm * context.px_per_mm, context.guard, contour.caps,
+                    context.stretch_at_corners));
   if (contour.caps.empty()) {
     contour.caps.assign(contour.wave->guarded.size(), 1e300);
     for (std::size_t i = 0; i < contour.caps.size(); ++i) {
@@ -72,8 +81,8 @@ std::unique_ptr<WavedContour> prepare(const DiffusionCurve& curve, int index,
     report.skipped = "not a closed curve";
     return nullptr;
   }
-  std::unique_ptr<WavedContour> contour(
-      new WavedContour{bspline::toSplineDiffusionCurve(curve), nullptr, nullptr, {}, report});
+  std::unique_ptr<WavedContour> contour(new WavedContour{
+      bspline::toSplineDiffusionCurve(curve), nullptr, nullptr, nullptr, {}, report});
   contour->table = std::make_unique<bspline::ArcLengthTable>(contour->spline.geometry);
   const double length = contour->table->totalLength();
   report.arc_length_mm = length / context.px_per_mm;
@@ -157,7 +166,7 @@ std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
       lines.push_back(found != waved.end() ? sampleWave(*found->second->wave, parameters[i])
                                            : sampleCurve(image.curves[i], 16));
     }
-    const std::vector<Crossing> crossings = findCrossings(lines);
+    const std::vector<Crossing> crossings = findCrossings(lines, kCrossingCellPx);
     std::map<int, bool> changed;
     left.clear();
     for (const Crossing& crossing : crossings) {
@@ -180,8 +189,9 @@ void finishReport(const WavedContour& contour, const Polyline& original, double 
                   CurveWaveReport& report) {
   const ContourWave& wave = *contour.wave;
   double sum = 0.0, low = 1e300, high = 0.0;
+  const PolylineDistance distance(original);
   for (const WavePeak& peak : wave.layout.peaks) {
-    const double d = distanceToPolyline(wave.curve.pointAt(peak.arc_length), original) / px_per_mm;
+    const double d = distance(wave.curve.pointAt(peak.arc_length)) / px_per_mm;
     sum += d;
     low = std::min(low, d);
     high = std::max(high, d);
