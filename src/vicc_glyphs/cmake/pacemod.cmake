@@ -64,6 +64,7 @@ if(CATKIN_ENABLE_TESTING)
     test/pacemod/SkeletonGuardTest.cpp
     test/pacemod/ContourWavesTest.cpp
     test/pacemod/OffsetContourTest.cpp
+    test/pacemod/PolylineTest.cpp
   )
   target_compile_options(vicc_glyphs_pacemod_test PRIVATE ${VICC_WARNINGS})
   target_compile_definitions(vicc_glyphs_pacemod_test PRIVATE
@@ -71,7 +72,8 @@ if(CATKIN_ENABLE_TESTING)
   target_link_libraries(vicc_glyphs_pacemod_test vicc_glyphs_pacemod gtest_main)
   # Real icons end to end (imports, renders): the fast subset of bench/pacemod.
   if(TARGET vicc_glyphs_pacemod_measure)
-    catkin_add_gtest(vicc_glyphs_pacemod_glyph_test test/pacemod/PacemodGlyphTest.cpp)
+    catkin_add_gtest(vicc_glyphs_pacemod_glyph_test test/pacemod/PacemodGlyphTest.cpp
+      test/pacemod/CrossingRegressionTest.cpp)
     target_compile_options(vicc_glyphs_pacemod_glyph_test PRIVATE ${VICC_WARNINGS})
     target_include_directories(vicc_glyphs_pacemod_glyph_test PRIVATE bench/pacemod)
     target_compile_definitions(vicc_glyphs_pacemod_glyph_test PRIVATE

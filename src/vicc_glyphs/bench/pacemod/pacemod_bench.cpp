@@ -4,7 +4,7 @@
 // amplitudes measured from the distance to the original contour (wave_measurement.hpp), and
 // all polygons are checked for crossings. Prints Markdown tables (see README.md here).
 // Usage: vicc_glyphs_pacemod_bench [ICON_DIR] [--quick] [--verbose] [--stretch-at-corners]
-//        [--opencv-labels]
+//        [--opencv-labels] [--waveform sine|triangle|sawtooth|rectangle] [--no-render]
 
 #include <algorithm>
 #include <cstdio>
@@ -38,6 +38,7 @@ double threadMilliseconds() {
 }
 
 bool verbose = false;
+bool render_glyphs = true;  // --no-render: checks only (faster searches for failures)
 WaveOptions options;
 
 struct Totals {
@@ -50,6 +51,26 @@ double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
+}
+
+double percentile95(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, static_cast<std::size_t>(0.95 * v.size()))];
+}
+
+// The machine's load average (1, 5, 15 min): the CPU times are per thread, but a loaded machine
+// still slows them (shared caches, hyper-threads).
+std::string loadAverage() {
+  std::FILE* file = std::fopen("/proc/loadavg", "r");
+  char text[64] = "unknown";
+  if (file) {
+    if (!std::fgets(text, sizeof text, file)) std::snprintf(text, sizeof text, "unknown");
+    std::fclose(file);
+  }
+  std::string load = text;
+  const std::size_t cut = load.find(' ', load.find(' ', load.find(' ') + 1) + 1);
+  return cut == std::string::npos ? load : load.substr(0, cut);
 }
 
 double maximum(const std::vector<double>& v) {
@@ -65,7 +86,7 @@ void runGlyph(const fs::path& icon, const WaveSpec& spec, DiffusionCurveRenderer
   const std::vector<CurveWaveReport> reports =
       applyWaves(image, selectCurves(image, {}), spec, kSizeMm, options);
   const double render_start = threadMilliseconds();
-  renderer.render(image, RenderOptions{}, result);
+  if (render_glyphs) renderer.render(image, RenderOptions{}, result);
   const double end = threadMilliseconds();
   totals.modify_ms.push_back(render_start - modify_start);
   totals.render_ms.push_back(end - render_start);
@@ -92,8 +113,8 @@ const char* kColumns =
     "| glyphs | contours | count ok (decidable) | with all waves | undecidable | lobes within 10 % "
     "| "
     "median amp. err % | worst amp. err % | reduced knot points | new crossings | modify ms | "
-    "render ms | total ms median | total ms max |\n"
-    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    "render ms | total ms median | total ms p95 | total ms max |\n"
+    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 
 void printHeader(const char* first) {
   std::printf("| %s ", first);
@@ -104,11 +125,11 @@ void printRow(const std::string& label, const Totals& t) {
   const measure::GlyphCheck& c = t.check;
   std::printf(
       "| %s | %d | %d | %d/%d | %d | %d | %d/%d | %.1f | %.1f | %d | %d | %.1f | %.1f | %.1f | "
-      "%.1f |\n",
+      "%.1f | %.1f |\n",
       label.c_str(), t.glyphs, c.contours, c.count_ok, c.count_checked, c.contours_with_all_waves,
       c.flattened_contours, c.lobes_ok, c.lobes_checked, 100.0 * c.median_error(),
       100.0 * c.worst_error, c.reduced_peaks, c.new_crossings, median(t.modify_ms),
-      median(t.render_ms), median(t.total_ms), maximum(t.total_ms));
+      median(t.render_ms), median(t.total_ms), percentile95(t.total_ms), maximum(t.total_ms));
 }
 
 }  // namespace
@@ -116,6 +137,7 @@ void printRow(const std::string& label, const Totals& t) {
 int main(int argc, char** argv) {
   fs::path dir = VICC_GLYPHS_DATA_DIR "/icons";
   bool quick = false;
+  std::string only_waveform;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--quick") {
@@ -124,6 +146,10 @@ int main(int argc, char** argv) {
       verbose = true;
     } else if (arg == "--stretch-at-corners") {
       options.stretch_at_corners = true;
+    } else if (arg == "--no-render") {
+      render_glyphs = false;
+    } else if (arg == "--waveform" && i + 1 < argc) {
+      only_waveform = argv[++i];
     } else if (arg == "--opencv-labels") {
       options.feature_transform = FeatureTransform::OpenCvLabels;
     } else {
@@ -142,10 +168,12 @@ int main(int argc, char** argv) {
   DiffusionCurveRenderer renderer;
   RenderResult result;
   std::map<std::string, Totals> by_waveform;
-  std::printf("%zu icons, %d px = %.0f mm\n\n", icons.size(), kSize, kSizeMm);
+  std::printf("%zu icons, %d px = %.0f mm, load average at the start %s\n\n", icons.size(), kSize,
+              kSizeMm, loadAverage().c_str());
   printHeader("waveform, waves/10 mm, amplitude mm");
   for (Waveform waveform :
        {Waveform::Sine, Waveform::Triangle, Waveform::Sawtooth, Waveform::Rectangle}) {
+    if (!only_waveform.empty() && waveformName(waveform) != only_waveform) continue;
     for (double f : frequencies) {
       for (double a : amplitudes) {
         const WaveSpec spec{waveform, f / 10.0, a};
@@ -166,5 +194,6 @@ int main(int argc, char** argv) {
   std::printf("\n");
   printHeader("waveform (all frequencies and amplitudes)");
   for (const auto& [name, totals] : by_waveform) printRow(name, totals);
+  std::printf("\nload average at the end %s\n", loadAverage().c_str());
   return 0;
 }

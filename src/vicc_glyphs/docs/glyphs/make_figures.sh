@@ -14,7 +14,7 @@ for a in 1 5 20; do
   "$tool" design "$designs/rain_forecast_dashes.yaml" --values probability=50,amount=$a \
     --out "$here/rain_forecast_dashes_amount$a.png" --size 160
 done
-for p in 95 80 65 40; do
+for p in 95 85 75 65 40; do
   "$tool" design "$designs/rain_forecast_dashes.yaml" --values probability=$p,amount=20 \
     --out "$here/rain_forecast_dashes_probability$p.png" --size 160
 done

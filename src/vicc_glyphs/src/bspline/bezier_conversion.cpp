@@ -1,12 +1,11 @@
 #include "vicc_glyphs/bspline/bezier_conversion.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
 #include <string>
-
-#include "vicc_glyphs/bspline/knot_insertion.hpp"
 
 namespace vicc_glyphs {
 namespace bspline {
@@ -14,6 +13,23 @@ namespace {
 
 constexpr int kCubic = 3;
 constexpr double kPi = 3.14159265358979323846;
+
+// The blossom f(u1, u2, u3) of the cubic polynomial piece on knot span `span`: de Boor's
+// algorithm with a different argument per level (Ramshaw); f(a, a, b) etc. are Bezier points.
+Point2 blossom(const BSplineCurve& curve, int span, const std::array<double, kCubic>& u) {
+  const std::vector<double>& t = curve.knots();
+  const std::vector<Point2>& d = curve.controlPoints();
+  std::array<Point2, kCubic + 1> p;
+  for (int j = 0; j <= kCubic; ++j) p[j] = d[span - kCubic + j];
+  for (int r = 1; r <= kCubic; ++r) {
+    for (int j = kCubic; j >= r; --j) {
+      const int i = span - kCubic + j;
+      const double alpha = (u[r - 1] - t[i]) / (t[i + kCubic + 1 - r] - t[i]);
+      p[j] = (1.0 - alpha) * p[j - 1] + alpha * p[j];
+    }
+  }
+  return p[kCubic];
+}
 
 double angleBetweenDegrees(const Point2& a, const Point2& b) {
   const double cross = a.x() * b.y() - a.y() * b.x();
@@ -93,24 +109,27 @@ BezierFromSpline bsplineToBezierChain(const BSplineCurve& curve) {
     throw std::invalid_argument("bsplineToBezierChain: only cubic B-splines, got degree " +
                                 std::to_string(curve.degree()));
   }
-  const BSplineCurve bezier = raiseMultiplicities(curve, kCubic);
-  const std::vector<double>& t = bezier.knots();
-  // With a knot of multiplicity >= p at each domain end, the curve's end points are the de Boor
-  // points just inside them; points beyond belong to knot spans outside the domain.
-  const int last_begin_knot =
-      static_cast<int>(std::upper_bound(t.begin(), t.end(), bezier.domainBegin()) - t.begin()) - 1;
-  const int first_end_knot =
-      static_cast<int>(std::lower_bound(t.begin(), t.end(), bezier.domainEnd()) - t.begin());
-  const int first = last_begin_knot - kCubic;
-  const int last = first_end_knot - 1;
-  std::vector<double> breaks = bezier.breakpoints();
-  const int segments = static_cast<int>(breaks.size()) - 1;
-  if (last - first + 1 != 3 * segments + 1) {
-    throw std::logic_error("bsplineToBezierChain: unexpected de Boor point count after insertion");
+  // Span by span instead of raising every knot to multiplicity 3 by repeated insertion, which
+  // copies the whole curve per inserted knot (quadratic: PACEMOD's rectangle waves have thousands
+  // of knots). The result is the same: the Bezier points are blossoms of each span's polynomial.
+  const std::vector<double>& t = curve.knots();
+  const int end = curve.controlPointCount();
+  std::vector<Point2> points;
+  std::vector<double> breaks;
+  for (int span = kCubic; span < end; ++span) {
+    if (!(t[span + 1] > t[span])) continue;
+    const double a = t[span], b = t[span + 1];
+    if (points.empty()) {
+      points.push_back(blossom(curve, span, {a, a, a}));
+      breaks.push_back(a);
+    }
+    points.push_back(blossom(curve, span, {a, a, b}));
+    points.push_back(blossom(curve, span, {a, b, b}));
+    points.push_back(blossom(curve, span, {b, b, b}));
+    breaks.push_back(b);
   }
-  const std::vector<Point2>& d = bezier.controlPoints();
-  return BezierFromSpline{std::vector<Point2>(d.begin() + first, d.begin() + last + 1),
-                          ChainParameterMap(std::move(breaks))};
+  if (points.empty()) throw std::invalid_argument("bsplineToBezierChain: empty domain");
+  return BezierFromSpline{std::move(points), ChainParameterMap(std::move(breaks))};
 }
 
 }  // namespace bspline

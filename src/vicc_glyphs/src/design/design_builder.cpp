@@ -98,17 +98,64 @@ void applyWaveEncodings(DiffusionCurveImage& image, const std::vector<Active>& a
   }
 }
 
+// `rgb` with its HSV value set to `value`; hue and saturation kept.
+Color withValue(const Color& rgb, double value) {
+  const double max = rgb.maxCoeff();
+  if (!(max > 0.0)) return Color::Constant(value);  // black: a grey of that value
+  return rgb * (value / max);
+}
+
+// The dash colour: the encoding's, with the HSV value of a colour_amplitude encoding on the same
+// curves (the value contrast of the dashes, Table 6.1), if there is one with a level >= 0.
+Color dashColor(const DiffusionCurveImage& image, const Active& dashes,
+                const std::vector<Active>& active, const GlyphDesign& design,
+                const perception::PerceptionModel& model) {
+  Color color = dashes.encoding->dash_color;
+  const std::vector<int> curves = pacemod::selectCurves(image, dashes.encoding->curves);
+  for (const Active& a : active) {
+    if (a.encoding->channel != Channel::ColourAmplitude || modelLevel(a) < 0 ||
+        pacemod::selectCurves(image, a.encoding->curves) != curves) {
+      continue;
+    }
+    color = withValue(color, stimulusOf(a, VisualVariable::ColourAmplitude, design, model));
+  }
+  return color;
+}
+
+// Dashes of model level `level` on a contour of `length_mm`: round(length / the level's colour
+// period), at least 1; on a short contour neighbouring levels can round to the same count, so
+// each of the encoding's levels (increasing frequency) gets at least one more dash than the
+// level below it: every data level stays apart on every contour.
+int dashCount(double length_mm, const Active& active, int level, const GlyphDesign& design,
+              const perception::PerceptionModel& model) {
+  std::vector<int> used;
+  for (int l : active.encoding->model_levels) {
+    if (l >= 0) used.push_back(l);
+  }
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  int count = 0;
+  for (int l : used) {
+    const double period_mm =
+        model
+            .stimulus(VisualVariable::ColourFrequency, l, design.size_mm, active.encoding->waveform)
+            .stimulus;
+    count = std::max({1, static_cast<int>(std::lround(length_mm / period_mm)), count + 1});
+    if (l == level) break;
+  }
+  return count;
+}
+
 void applyDashEncoding(DiffusionCurveImage& image, const Active& active,
-                       const std::vector<int>& curves, const GlyphDesign& design,
-                       const perception::PerceptionModel& model) {
+                       const std::vector<int>& curves, const Color& color,
+                       const GlyphDesign& design, const perception::PerceptionModel& model) {
   if (modelLevel(active) < 0) return;
-  const double period_mm = stimulusOf(active, VisualVariable::ColourFrequency, design, model);
   for (int index : curves) {
     const pacemod::ChainArcLength arc(image.curves[static_cast<size_t>(index)]);
     const double length_mm = arc.totalLength() / pixelsPerMm(image, design);
     pacemod::DashSpec spec;
-    spec.color = active.encoding->dash_color;
-    spec.count = std::max(1, static_cast<int>(std::lround(length_mm / period_mm)));
+    spec.color = color;
+    spec.count = dashCount(length_mm, active, modelLevel(active), design, model);
     pacemod::applyDashes(image, {index}, spec, design.size_mm);
   }
 }
@@ -201,7 +248,7 @@ DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>
   for (const Active& a : active) {
     if (a.encoding->channel != Channel::ColourFrequency) continue;
     applyDashEncoding(image, a, without(pacemod::selectCurves(image, a.encoding->curves), hidden),
-                      design, model);
+                      dashColor(image, a, active, design, model), design, model);
   }
   for (auto it = hidden.rbegin(); it != hidden.rend(); ++it) {
     if (*it < 0 || *it >= static_cast<int>(icon_curves)) {

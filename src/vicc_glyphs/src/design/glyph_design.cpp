@@ -18,6 +18,7 @@ const std::map<std::string, Channel>& channelNames() {
       {"geometric_frequency", Channel::GeometricFrequency},
       {"geometric_amplitude", Channel::GeometricAmplitude},
       {"colour_frequency", Channel::ColourFrequency},
+      {"colour_amplitude", Channel::ColourAmplitude},
       {"inflate", Channel::Inflate},
       {"fill_color", Channel::FillColor},
       {"glyph_scale", Channel::GlyphScale},
@@ -32,6 +33,7 @@ std::optional<VisualVariable> modelVariable(Channel channel) {
   if (channel == Channel::GeometricFrequency) return VisualVariable::GeometricFrequency;
   if (channel == Channel::GeometricAmplitude) return VisualVariable::GeometricAmplitude;
   if (channel == Channel::ColourFrequency) return VisualVariable::ColourFrequency;
+  if (channel == Channel::ColourAmplitude) return VisualVariable::ColourAmplitude;
   return std::nullopt;
 }
 

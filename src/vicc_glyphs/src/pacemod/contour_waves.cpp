@@ -180,11 +180,10 @@ std::size_t nearestPeak(const WaveLayout& layout, double arc_length) {
 // the offset contour, then Fowler-Bartels meets the knot points exactly and the flanks become
 // strips (fitStrips).
 BSplineCurve rectangleWave(const BSplineCurve& original, const bspline::ArcLengthTable& table,
-                           const BSplineCurve& fit, double area, const ContourWave& wave) {
-  // Fitting on the final knot vector gives the same curve space as raising the corner knots of
-  // the smooth fit by knot insertion, without Boehm's O(n) copy per inserted knot.
-  BSplineCurve raised =
-      fitOnArcLength(original, table, withContourCorners(knotVector(wave.layout), original, table));
+                           const ContourFrame& frame, const ContourWave& wave) {
+  const BSplineCurve& fit = frame.frame_fit;
+  const double area = frame.area;
+  BSplineCurve raised = frame.rectangle_fit;
   std::vector<Point2> points = raised.controlPoints();
   const std::vector<double>& knots = raised.knots();
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -254,22 +253,36 @@ int cornerControlIndex(const BSplineCurve& curve, double knot) {
   return static_cast<int>(first - knots.begin()) - 1;
 }
 
-ContourWave modifyContour(const BSplineCurve& original, const bspline::ArcLengthTable& table,
-                          Waveform waveform, int wave_count, double amplitude,
-                          const SkeletonGuard* guard, const std::vector<double>& caps,
-                          bool stretch_at_corners) {
+ContourFrame contourFrame(const BSplineCurve& original, const bspline::ArcLengthTable& table,
+                          Waveform waveform, int wave_count) {
   if (!original.isClosed(1e-6)) throw std::invalid_argument("modifyContour: contour is not closed");
-  ContourWave wave{original, waveLayout(waveform, wave_count, table.totalLength()), {}, {}, {}, {},
-                   {}};
+  ContourFrame frame{waveLayout(waveform, wave_count, table.totalLength()), original, 0.0,
+                     original};
   // The smooth fit with single knots every quarter period (the sine's layout) is the sine's base
   // and gives every waveform its normals: the least-squares ringing next to the icon's own
   // corners dies out within a few such short spans, whereas the half-period spans of the sharp
   // layouts would carry it far along the contour.
-  const BSplineCurve frame_fit = fitOnArcLength(
+  frame.frame_fit = fitOnArcLength(
       original, table,
       withContourCorners(knotVector(waveLayout(Waveform::Sine, wave_count, table.totalLength())),
                          original, table));
-  const double area = bspline::signedArea(frame_fit);
+  frame.area = bspline::signedArea(frame.frame_fit);
+  if (waveform == Waveform::Rectangle) {
+    // Fitting on the final knot vector gives the same curve space as raising the corner knots of
+    // the smooth fit by knot insertion, without Boehm's O(n) copy per inserted knot.
+    frame.rectangle_fit = fitOnArcLength(
+        original, table, withContourCorners(knotVector(frame.layout), original, table));
+  }
+  return frame;
+}
+
+ContourWave modifyContour(const ContourFrame& frame, const BSplineCurve& original,
+                          const bspline::ArcLengthTable& table, double amplitude,
+                          const SkeletonGuard* guard, const std::vector<double>& caps,
+                          bool stretch_at_corners) {
+  ContourWave wave{original, frame.layout, {}, {}, {}, {}, {}};
+  const BSplineCurve& frame_fit = frame.frame_fit;
+  const double area = frame.area;
   Polyline contour_line;
   if (stretch_at_corners) {
     for (double u : table.parameters()) contour_line.push_back(original.pointAt(u));
@@ -301,12 +314,12 @@ ContourWave modifyContour(const BSplineCurve& original, const bspline::ArcLength
             ? translationForDistance(knot, direction, allowed.amplitude, contour_line)
             : allowed.amplitude);
   }
-  switch (waveform) {
+  switch (wave.layout.waveform) {
     case Waveform::Sine:
       wave.curve = translateKnotPoints(frame_fit, wave);
       break;
     case Waveform::Rectangle:
-      wave.curve = rectangleWave(original, table, frame_fit, area, wave);
+      wave.curve = rectangleWave(original, table, frame, wave);
       break;
     case Waveform::Triangle:
     case Waveform::Sawtooth:
@@ -314,6 +327,14 @@ ContourWave modifyContour(const BSplineCurve& original, const bspline::ArcLength
       break;
   }
   return wave;
+}
+
+ContourWave modifyContour(const BSplineCurve& original, const bspline::ArcLengthTable& table,
+                          Waveform waveform, int wave_count, double amplitude,
+                          const SkeletonGuard* guard, const std::vector<double>& caps,
+                          bool stretch_at_corners) {
+  return modifyContour(contourFrame(original, table, waveform, wave_count), original, table,
+                       amplitude, guard, caps, stretch_at_corners);
 }
 
 }  // namespace pacemod

@@ -18,11 +18,15 @@ namespace {
 
 constexpr double kMinQuarterPeriodPx = 0.5;
 constexpr int kSamplesPerSpan = 16;  // as dense as the bench's polygon check
+// Bucket size of the crossing search, px: high-frequency waves put hundreds of their dense
+// samples into an 8 px cell, and each bucket's pairs are tested.
+constexpr double kCrossingCellPx = 2.0;
 
 // A curve being waved: its spline form, arc-length table, current wave and amplitude caps.
 struct WavedContour {
   bspline::SplineDiffusionCurve spline;
   std::unique_ptr<bspline::ArcLengthTable> table;
+  std::unique_ptr<ContourFrame> frame;  ///< built once, the same for every repair round
   std::unique_ptr<ContourWave> wave;
   std::vector<double> caps;
   CurveWaveReport report;
@@ -51,9 +55,14 @@ void checkArguments(const DiffusionCurveImage& image, const std::vector<int>& cu
 }
 
 void build(WavedContour& contour, const Context& context) {
-  contour.wave = std::make_unique<ContourWave>(modifyContour(
-      contour.spline.geometry, *contour.table, context.spec.waveform, contour.report.wave_count,
-      context.spec.amplitude_mm * context.px_per_mm, context.guard, contour.caps));
+  if (!contour.frame) {
+    contour.frame = std::make_unique<ContourFrame>(contourFrame(
+        contour.spline.geometry, *contour.table, context.spec.waveform, contour.report.wave_count));
+  }
+  contour.wave = std::make_unique<ContourWave>(
+      modifyContour(*contour.frame, contour.spline.geometry, *contour.table,
+                    context.spec.amplitude_mm * context.px_per_mm, context.guard, contour.caps,
+                    context.stretch_at_corners));
   if (contour.caps.empty()) {
     contour.caps.assign(contour.wave->guarded.size(), 1e300);
     for (std::size_t i = 0; i < contour.caps.size(); ++i) {
@@ -72,8 +81,8 @@ std::unique_ptr<WavedContour> prepare(const DiffusionCurve& curve, int index,
     report.skipped = "not a closed curve";
     return nullptr;
   }
-  std::unique_ptr<WavedContour> contour(
-      new WavedContour{bspline::toSplineDiffusionCurve(curve), nullptr, nullptr, {}, report});
+  std::unique_ptr<WavedContour> contour(new WavedContour{
+      bspline::toSplineDiffusionCurve(curve), nullptr, nullptr, nullptr, {}, report});
   contour->table = std::make_unique<bspline::ArcLengthTable>(contour->spline.geometry);
   const double length = contour->table->totalLength();
   report.arc_length_mm = length / context.px_per_mm;
@@ -108,14 +117,37 @@ Polyline sampleWave(const ContourWave& wave, std::vector<double>& parameters) {
   return line;
 }
 
-// Halves the caps of the knot points within half a period of arc length `u` (cyclically).
+// Cyclic arc-length distance between two points of a closed contour.
+double cyclicDistance(double a, double b, double length) {
+  const double d = std::abs(a - b);
+  return std::min(d, length - d);
+}
+
+// Halves the caps of the knot points within half a period of arc length `u` (cyclically), or
+// sets them to 0 in the last round. A crossing can persist with every knot point of that window
+// already at 0: the curve between knot points (a neighbouring lobe's flank overshooting into a
+// thin spike, the swallowtail at a sharp icon corner) makes it. Then the window widens by half
+// periods until it reaches knot points with amplitude left, so that repeated rounds flatten the
+// contour around the crossing outward until the crossing is gone (at worst the whole contour).
 void capAround(WavedContour& contour, double u, bool last_round) {
   const WaveLayout& layout = contour.wave->layout;
   const double half_period = 0.5 * layout.length / layout.wave_count;
+  auto applied = [&](std::size_t i) {
+    return std::min(contour.caps[i], contour.wave->guarded[i].amplitude);
+  };
+  double window = half_period;
+  for (;;) {
+    bool reducible = false;
+    for (std::size_t i = 0; i < layout.peaks.size(); ++i) {
+      reducible |= cyclicDistance(layout.peaks[i].arc_length, u, layout.length) <= window &&
+                   applied(i) > 0.0;
+    }
+    if (reducible || window >= 0.5 * layout.length) break;
+    window += half_period;
+  }
   for (std::size_t i = 0; i < layout.peaks.size(); ++i) {
-    const double d = std::abs(layout.peaks[i].arc_length - u);
-    if (std::min(d, layout.length - d) > half_period) continue;
-    contour.caps[i] = last_round ? 0.0 : 0.5 * contour.wave->guarded[i].amplitude;
+    if (cyclicDistance(layout.peaks[i].arc_length, u, layout.length) > window) continue;
+    contour.caps[i] = last_round ? 0.0 : std::min(contour.caps[i], 0.5 * applied(i));
   }
   contour.caps.back() = contour.caps.front() = std::min(contour.caps.front(), contour.caps.back());
 }
@@ -125,7 +157,8 @@ std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
                                    std::map<int, std::unique_ptr<WavedContour>>& waved,
                                    const Context& context) {
   std::map<int, int> left;
-  for (int round = 0; round <= kMaxRepairRounds; ++round) {
+  const int last_round = kMaxRepairRounds + kMaxFlatteningRounds;
+  for (int round = 0; round <= last_round; ++round) {
     std::vector<Polyline> lines;
     std::vector<std::vector<double>> parameters(image.curves.size());
     for (int i = 0; i < static_cast<int>(image.curves.size()); ++i) {
@@ -133,16 +166,16 @@ std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
       lines.push_back(found != waved.end() ? sampleWave(*found->second->wave, parameters[i])
                                            : sampleCurve(image.curves[i], 16));
     }
-    const std::vector<Crossing> crossings = findCrossings(lines);
+    const std::vector<Crossing> crossings = findCrossings(lines, kCrossingCellPx);
     std::map<int, bool> changed;
     left.clear();
     for (const Crossing& crossing : crossings) {
       for (const SegmentRef& side : {crossing.a, crossing.b}) {
         ++left[side.line];
         const auto found = waved.find(side.line);
-        if (found == waved.end() || round == kMaxRepairRounds) continue;
+        if (found == waved.end() || round == last_round) continue;
         capAround(*found->second, parameters[side.line][side.segment],
-                  round + 1 == kMaxRepairRounds);
+                  round + 1 >= kMaxRepairRounds);
         changed[side.line] = true;
       }
     }
@@ -156,8 +189,9 @@ void finishReport(const WavedContour& contour, const Polyline& original, double 
                   CurveWaveReport& report) {
   const ContourWave& wave = *contour.wave;
   double sum = 0.0, low = 1e300, high = 0.0;
+  const PolylineDistance distance(original);
   for (const WavePeak& peak : wave.layout.peaks) {
-    const double d = distanceToPolyline(wave.curve.pointAt(peak.arc_length), original) / px_per_mm;
+    const double d = distance(wave.curve.pointAt(peak.arc_length)) / px_per_mm;
     sum += d;
     low = std::min(low, d);
     high = std::max(high, d);

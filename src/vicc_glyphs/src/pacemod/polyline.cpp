@@ -31,6 +31,64 @@ double distanceToPolyline(const Point2& point, const Polyline& line) {
   return std::sqrt(best);
 }
 
+namespace {
+
+long long cellKey(long long x, long long y) { return (x << 32) ^ (y & 0xffffffffLL); }
+
+double squaredSegmentDistance(const Point2& point, const Point2& a, const Point2& b) {
+  const Point2 d = b - a;
+  const double length2 = d.squaredNorm();
+  const double t = length2 > 0.0 ? std::clamp((point - a).dot(d) / length2, 0.0, 1.0) : 0.0;
+  return (point - a - t * d).squaredNorm();
+}
+
+}  // namespace
+
+PolylineDistance::PolylineDistance(const Polyline& line, double cell) : line_(line), cell_(cell) {
+  bool first = true;
+  for (int i = 0; i + 1 < static_cast<int>(line.size()); ++i) {
+    const Point2 lo = line[i].cwiseMin(line[i + 1]) / cell;
+    const Point2 hi = line[i].cwiseMax(line[i + 1]) / cell;
+    if (!lo.allFinite() || !hi.allFinite()) continue;
+    const long long x0 = std::floor(lo.x()), y0 = std::floor(lo.y());
+    const long long x1 = std::floor(hi.x()), y1 = std::floor(hi.y());
+    min_x_ = first ? x0 : std::min(min_x_, x0);
+    min_y_ = first ? y0 : std::min(min_y_, y0);
+    max_x_ = first ? x1 : std::max(max_x_, x1);
+    max_y_ = first ? y1 : std::max(max_y_, y1);
+    first = false;
+    for (long long x = x0; x <= x1; ++x) {
+      for (long long y = y0; y <= y1; ++y) buckets_[cellKey(x, y)].push_back(i);
+    }
+  }
+}
+
+double PolylineDistance::operator()(const Point2& point) const {
+  if (buckets_.empty()) return distanceToPolyline(point, line_);
+  const Point2 at = point / cell_;
+  if (!at.allFinite()) return std::numeric_limits<double>::infinity();
+  const long long cx = std::floor(at.x()), cy = std::floor(at.y());
+  // Rings beyond this one hold no cell of the polyline's bounding box.
+  const long long last_ring = std::max(
+      {std::abs(cx - min_x_), std::abs(cx - max_x_), std::abs(cy - min_y_), std::abs(cy - max_y_)});
+  double best = std::numeric_limits<double>::infinity();
+  for (long long r = 0; r <= last_ring; ++r) {
+    for (long long x = cx - r; x <= cx + r; ++x) {
+      const bool side = x == cx - r || x == cx + r;  // whole column; else its two ring cells
+      for (long long y = cy - r; y <= cy + r; y += side || r == 0 ? 1 : 2 * r) {
+        const auto found = buckets_.find(cellKey(x, y));
+        if (found == buckets_.end()) continue;
+        for (int i : found->second) {
+          best = std::min(best, squaredSegmentDistance(point, line_[i], line_[i + 1]));
+        }
+      }
+    }
+    // Any cell of ring r + 1 is at least r cells away from the point.
+    if (best <= (r * cell_) * (r * cell_)) break;
+  }
+  return std::sqrt(best);
+}
+
 double polylineArea(const Polyline& line) {
   double area = 0.0;
   for (std::size_t i = 0; i + 1 < line.size(); ++i) {

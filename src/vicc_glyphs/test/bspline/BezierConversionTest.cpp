@@ -197,6 +197,32 @@ TEST(BezierConversionTest, DiffusionCurveColoursSurviveTheRoundTrip) {
   EXPECT_EQ(validate(image), "");
 }
 
+// The span-by-span blossoms give the same Bezier points as raising every knot to multiplicity 3
+// by Boehm insertion (thesis 2.5.2), for single, double and triple interior knots.
+TEST(BezierConversionTest, SpanBlossomsEqualTheKnotInsertionForm) {
+  const std::vector<double> knots{0, 0, 0, 0, 0.5, 1.2, 1.2, 2.0, 2.0, 2.0, 2.7, 3, 3, 3, 3};
+  std::vector<Point2> points;
+  for (std::size_t i = 0; i + 4 < knots.size(); ++i) {
+    points.push_back(Point2(std::cos(1.3 * i) * (3 + i), std::sin(0.7 * i) * 5 - i));
+  }
+  const BSplineCurve curve(3, knots, points);
+  const BezierFromSpline chain = bsplineToBezierChain(curve);
+  const BSplineCurve raised = raiseMultiplicities(curve, 3);
+  const std::vector<Point2>& expected = raised.controlPoints();
+  ASSERT_EQ(chain.control_points.size(), expected.size());  // 5 segments: 16 points
+  EXPECT_EQ(chain.control_points.size(), 16u);
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_LT((chain.control_points[i] - expected[i]).norm(), 1e-12) << i;
+  }
+  for (double u : {0.0, 0.3, 1.2, 1.9, 2.95, 3.0}) {
+    DiffusionCurve bezier;
+    bezier.control_points = chain.control_points;
+    EXPECT_LT((bezier.pointAt(chain.parameter_map.toCurveParameter(u)) - curve.pointAt(u)).norm(),
+              1e-12)
+        << u;
+  }
+}
+
 TEST(BezierConversionTest, RejectsInvalidInput) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(bezierChainToBSpline({}), std::invalid_argument);

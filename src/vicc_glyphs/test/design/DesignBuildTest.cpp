@@ -1,7 +1,11 @@
 // Building the shipped designs: the encodings change the curves they name and only those.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <map>
+
 #include "vicc_glyphs/design/design_builder.hpp"
+#include "vicc_glyphs/pacemod/dashes.hpp"
 #include "vicc_glyphs/perception/perception_model_yaml.hpp"
 #include "vicc_glyphs/render/renderer.hpp"
 
@@ -95,6 +99,62 @@ TEST(DesignBuild, RainDashesHideDropsAndDashTheRest) {
   // Light: cloud + 1 drop (+ its barrier); heavy: cloud + 3 drops + 3 barriers.
   EXPECT_EQ(light.curves.size(), 3u);
   EXPECT_EQ(heavy.curves.size(), 7u);
+}
+
+// Table 6.7's five probability classes on the heavy-rain glyph (3 drops): the four uncertain
+// classes carry the four colour-frequency levels (dash count = round(arc length / the level's
+// colour period), at least one more than the level below: on the short drops levels 2 and 3
+// round to the same count), >= 90 % a solid contour; the dashes have the value V of
+// colour-amplitude level 3.
+TEST(DesignBuild, RainDashesShowAllFiveProbabilityClassesApart) {
+  using perception::VisualVariable;
+  const GlyphDesign design = shipped("rain_forecast_dashes");
+  const DiffusionCurveImage plain = loadIcon(design, 0);
+  const double value =
+      model()
+          .stimulus(VisualVariable::ColourAmplitude, 3, 50.0, perception::Waveform::Sine)
+          .stimulus;
+  const Color base = Color(0xa9, 0xc8, 0xee) / 255.0;
+  const Color dash = base * (value / base.maxCoeff());
+  EXPECT_NEAR(dash.maxCoeff(), 0.787, 0.001);  // level 3 of 4 in Table 6.1's 0.425-0.85
+  const int model_levels[] = {3, 2, 1, 0, -1};
+  int previous = 1 << 30;
+  int k = 0;
+  std::map<int, std::vector<int>> per_drop;
+  for (double probability : {50.0, 65.0, 75.0, 85.0, 95.0}) {
+    const DiffusionCurveImage glyph = buildGlyph(
+        design, design.levelsFor({{"probability", probability}, {"amount", 20}}), model());
+    int dashes = 0;
+    for (int drop : {1, 2, 3}) {
+      int dash_points = 0;
+      for (const auto* side : {&glyph.curves[drop].left_colors, &glyph.curves[drop].right_colors}) {
+        for (const ColorPoint& p : *side) dash_points += (p.rgb - dash).norm() < 1e-6;
+      }
+      // Expected: rounded counts, raised level by level to stay distinct.
+      const double length_mm =
+          pacemod::ChainArcLength(plain.curves[drop]).totalLength() / (plain.width / 50.0);
+      int expected = 0;
+      for (int level = 0; level <= model_levels[k]; ++level) {
+        const double period_mm =
+            model()
+                .stimulus(VisualVariable::ColourFrequency, level, 50.0, perception::Waveform::Sine)
+                .stimulus;
+        expected =
+            std::max({1, static_cast<int>(std::lround(length_mm / period_mm)), expected + 1});
+      }
+      EXPECT_EQ(dash_points, 2 * expected) << "probability " << probability << ", drop " << drop;
+      EXPECT_TRUE(dash_points > 0 || model_levels[k] < 0);
+      per_drop[drop].push_back(dash_points / 2);
+      dashes += dash_points / 2;
+    }
+    EXPECT_LT(dashes, previous) << "probability " << probability;  // fewer dashes, more certain
+    previous = dashes;
+    ++k;
+  }
+  EXPECT_EQ(previous, 0);                        // >= 90 %: solid drop contours
+  for (const auto& [drop, counts] : per_drop) {  // apart on every single drop, too
+    for (size_t i = 1; i < counts.size(); ++i) EXPECT_LT(counts[i], counts[i - 1]) << drop;
+  }
 }
 
 TEST(DesignBuild, IntracranialPressureInflatesTheBrainNotTheHead) {

@@ -33,12 +33,15 @@ enum class Channel {
   GeometricFrequency,  ///< waves per mm from the perception level (period), fixed amplitude
   GeometricAmplitude,  ///< wave amplitude from the perception level, fixed frequency
   ColourFrequency,     ///< dashes: count = round(arc length / colour period of the level)
-  Inflate,             ///< offsets_mm per data level
-  FillColor,           ///< colours per data level, replacing the icon colour `replace`
-  GlyphScale,          ///< scale about the image centre per data level
-  Hide,                ///< per data level, the channel's curves that are hidden
-  Band,                ///< gradient glyph: contour band, value/saturation factors per level
-  CentreDashes,        ///< gradient glyph: dashed central region, dash count + colour per level
+  /// HSV value V of the level (Table 6.1: 0.425-0.85) for the dashes of the colour_frequency
+  /// encodings on the same curves (their dash colour keeps its hue and saturation)
+  ColourAmplitude,
+  Inflate,       ///< offsets_mm per data level
+  FillColor,     ///< colours per data level, replacing the icon colour `replace`
+  GlyphScale,    ///< scale about the image centre per data level
+  Hide,          ///< per data level, the channel's curves that are hidden
+  Band,          ///< gradient glyph: contour band, value/saturation factors per level
+  CentreDashes,  ///< gradient glyph: dashed central region, dash count + colour per level
 };
 
 struct Encoding {

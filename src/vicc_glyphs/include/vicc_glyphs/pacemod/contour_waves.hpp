@@ -38,6 +38,26 @@ struct ContourWave {
   std::vector<double> translations;
 };
 
+/// What a contour's wave is built on and that does not depend on the amplitudes: the layout,
+/// the smooth fit whose normals translate the knot points, and for the rectangle the fit on its
+/// knot vector with triple corners. Built once per contour, reused by every repair round.
+struct ContourFrame {
+  WaveLayout layout;
+  bspline::BSplineCurve frame_fit;  ///< single knots every quarter period (+ the icon's corners)
+  double area = 0.0;                ///< signed area of frame_fit (orientation of the normals)
+  bspline::BSplineCurve rectangle_fit;  ///< Rectangle only: the fit on the rectangle's knots
+};
+
+/// Throws std::invalid_argument for an open curve or wave_count < 1.
+ContourFrame contourFrame(const bspline::BSplineCurve& original,
+                          const bspline::ArcLengthTable& table, Waveform waveform, int wave_count);
+
+/// The wave on a frame built from the same `original` and `table` by contourFrame.
+ContourWave modifyContour(const ContourFrame& frame, const bspline::BSplineCurve& original,
+                          const bspline::ArcLengthTable& table, double amplitude,
+                          const SkeletonGuard* guard, const std::vector<double>& caps = {},
+                          bool stretch_at_corners = false);
+
 /// `original` must be closed (first == last point) and have a tangent everywhere; `table` its
 /// arc-length table; amplitude in image pixels (>= 0); `guard` may be null (no prevention);
 /// `caps`: empty, or per layout peak an upper bound on its amplitude (pixels);

@@ -14,7 +14,9 @@
 // curves of the unmodified image limits each knot point (thesis 6.2.4.1); as that test only
 // looks at the knot points, a polygon check of all resulting curves follows, and the knot points
 // within half a period of a remaining crossing get their amplitude halved until no crossing is
-// left (an addition to the thesis, needed at sharp concave corners). The report says where.
+// left (an addition to the thesis, needed at sharp concave corners); a crossing that the curve
+// between flattened knot points still makes (a neighbouring lobe's flank at a thin spike, a
+// swallowtail at a sharp corner) flattens the neighbours too. The report says where.
 
 #include <string>
 #include <vector>
@@ -44,12 +46,16 @@ struct PeakReduction {
   double allowed_mm = 0.0;     ///< the amplitude applied instead of the requested one
   /// "skeleton": the half-space test of 6.2.4.1; "crossing": the polygon check after it (the
   /// modified contours still crossed near this knot point, so its amplitude was halved, at
-  /// most kMaxRepairRounds times, the last time to 0).
+  /// most kMaxRepairRounds times, the last time to 0; a crossing that outlives that flattens
+  /// the knot points next to the flat stretch, kMaxFlatteningRounds times at most).
   std::string reason;
 };
 
 /// Rounds of the polygon check that follows the skeleton guard.
 constexpr int kMaxRepairRounds = 6;
+/// Further rounds after those: each sets the knot points next to a crossing whose own window is
+/// already flat to 0, so that the flat stretch grows until the crossing is gone.
+constexpr int kMaxFlatteningRounds = 8;
 
 struct CurveWaveReport {
   int curve = 0;  ///< index in the image

@@ -2,6 +2,7 @@
 // Polylines of diffusion curves, for the distance field, the amplitude measurement and the
 // intersection checks.
 
+#include <unordered_map>
 #include <vector>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
@@ -16,6 +17,20 @@ Polyline sampleCurve(const DiffusionCurve& curve, int per_segment = 16);
 
 /// Euclidean distance from `point` to the nearest point of `line` (+inf for an empty line).
 double distanceToPolyline(const Point2& point, const Polyline& line);
+
+/// distanceToPolyline for many points against one polyline: its segments in grid buckets, each
+/// query searching rings of cells outward until no nearer segment can be left.
+class PolylineDistance {
+ public:
+  explicit PolylineDistance(const Polyline& line, double cell = 4.0);
+  double operator()(const Point2& point) const;
+
+ private:
+  const Polyline& line_;
+  double cell_;
+  long long min_x_ = 0, min_y_ = 0, max_x_ = 0, max_y_ = 0;
+  std::unordered_map<long long, std::vector<int>> buckets_;  ///< cell -> segment indices
+};
 
 /// Shoelace area of a closed polyline (positive: clockwise on screen, y down).
 double polylineArea(const Polyline& line);

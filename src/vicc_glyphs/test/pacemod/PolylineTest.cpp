@@ -1,0 +1,34 @@
+// Polyline helpers of PACEMOD: the bucketed distance query against the plain one.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "vicc_glyphs/pacemod/polyline.hpp"
+
+namespace vicc_glyphs {
+namespace pacemod {
+namespace {
+
+TEST(PolylineTest, BucketedDistanceEqualsTheExhaustiveOne) {
+  Polyline star;  // a closed star with spikes, 400 vertices
+  for (int i = 0; i <= 400; ++i) {
+    const double angle = 2 * M_PI * i / 400;
+    const double radius = 60 + 25 * std::sin(9 * angle);
+    star.push_back(Point2(200 + radius * std::cos(angle), 150 + radius * std::sin(angle)));
+  }
+  const PolylineDistance distance(star, 4.0);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-100, 500);
+  for (int k = 0; k < 2000; ++k) {
+    const Point2 p(coordinate(random), coordinate(random));
+    EXPECT_NEAR(distance(p), distanceToPolyline(p, star), 1e-9) << p.transpose();
+  }
+  EXPECT_NEAR(distance(star[17]), 0.0, 1e-12);
+  const Polyline empty;
+  EXPECT_TRUE(std::isinf(PolylineDistance(empty)(Point2(1, 2))));
+}
+
+}  // namespace
+}  // namespace pacemod
+}  // namespace vicc_glyphs
