@@ -18,7 +18,7 @@ for aa in "" "--no-aa"; do
     echo "== SDH-046 2023-03-06 ${full:-(its own status)} ${aa:-(rviz default 4x MSAA)}, one core (cpu $CORE), LP_NUM_THREADS=1"
     LP_NUM_THREADS=1 taskset -c "$CORE" devel/lib/vicc_anatomy_viz/vicc_avatar_fps --db "$DIR/p.db" \
       --patient SDH-046 --date 2023-03-06 --size 1280x800 --frames "$FRAMES" $full $aa 2>&1 \
-      | grep -E "^(status|transparency)"
+      | grep -E "^(status|transparency|display off)"
   done
 done
 uptime

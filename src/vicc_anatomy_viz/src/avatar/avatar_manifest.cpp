@@ -57,6 +57,15 @@ GeneratedShape readShape(const Cursor& item) {
   return shape;
 }
 
+/// One spindle (a mapping) or several parts of one structure (a sequence of mappings).
+std::vector<GeneratedShape> readShapes(const Cursor& item) {
+  if (item.isMap()) return {readShape(item)};
+  std::vector<GeneratedShape> shapes;
+  for (const Cursor& part : item.items()) shapes.push_back(readShape(part));
+  if (shapes.empty()) item.fail("generated needs at least one part");
+  return shapes;
+}
+
 ProxyPlacement readProxy(const Cursor& item) {
   item.allowOnly({"bone", "at", "azimuth", "elevation", "radius"});
   ProxyPlacement proxy;
@@ -98,7 +107,7 @@ StructureEntry readStructure(const Cursor& item, const AnatomyCatalog& catalog,
   }
   if (item.has("generated") && item.has("mesh"))
     item.fail(entry.id + " has both generated and mesh");
-  if (item.has("generated")) entry.generated = readShape(item.child("generated"));
+  if (item.has("generated")) entry.generated = readShapes(item.child("generated"));
   if (item.has("mesh")) entry.mesh = readMeshSource(item.child("mesh"), directory);
   if (item.has("proxy")) entry.proxy = readProxy(item.child("proxy"));
   return entry;

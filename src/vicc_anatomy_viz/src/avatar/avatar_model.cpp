@@ -5,6 +5,7 @@
 
 #include "vicc_anatomy_viz/avatar/avatar_builder.hpp"
 #include "vicc_anatomy_viz/avatar/dermatome_labelling.hpp"
+#include "vicc_anatomy_viz/avatar/mesh_geometry.hpp"
 #include "vicc_anatomy_viz/avatar/skin_mesh_loader.hpp"
 #include "vicc_anatomy_viz/avatar/structure_generator.hpp"
 #include "vicc_anatomy_viz/errors.hpp"
@@ -33,9 +34,10 @@ AvatarStructure makeStructure(const AvatarBuild& build, const StructureEntry& en
   const std::string what =
       build.manifest.path + ": " + entry.where + " (" + entry.id + ", " + toString(side) + ")";
   const TriangleMesh& skin = build.model.skin;
-  if (entry.generated) {
-    structure.mesh =
-        generateSpindle(skin, build.landmarks, *entry.generated, side, kStructureSkinMargin, what);
+  if (!entry.generated.empty()) {
+    for (const GeneratedShape& part : entry.generated)
+      appendMeshPart(structure.mesh, generateSpindle(skin, build.landmarks, part, side,
+                                                     kStructureSkinMargin, what));
   } else if (entry.mesh) {
     structure.mesh = loadAtlasMesh(*entry.mesh);
   }

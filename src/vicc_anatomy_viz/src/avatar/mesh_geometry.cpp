@@ -57,6 +57,14 @@ std::vector<Eigen::Vector3f> vertexNormals(const TriangleMesh& mesh) {
   return normals;
 }
 
+void appendMeshPart(TriangleMesh& mesh, const TriangleMesh& part) {
+  const int offset = static_cast<int>(mesh.vertices.size());
+  mesh.vertices.insert(mesh.vertices.end(), part.vertices.begin(), part.vertices.end());
+  mesh.normals.insert(mesh.normals.end(), part.normals.begin(), part.normals.end());
+  for (const Eigen::Vector3i& triangle : part.triangles)
+    mesh.triangles.push_back(triangle + Eigen::Vector3i::Constant(offset));
+}
+
 double signedVolume(const TriangleMesh& mesh) {
   double volume = 0;
   for (const Eigen::Vector3i& t : mesh.triangles) {

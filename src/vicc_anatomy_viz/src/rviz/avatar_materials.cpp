@@ -7,7 +7,6 @@
 #include <OGRE/OgreTextureManager.h>
 
 #include <algorithm>
-#include <utility>
 
 #include "vicc_anatomy_viz/avatar_view/procedural_texture.hpp"
 
@@ -17,8 +16,7 @@ namespace {
 const Ogre::String& kGroup = Ogre::ResourceGroupManager::DEFAULT_RESOURCE_GROUP_NAME;
 constexpr int kTextureSize = 128;
 
-/// Lit, double sided off, with ambient = diffuse so the side away from the light keeps
-/// its hue readable.
+/// Lit, with ambient 0.6 x diffuse so the side away from the light keeps its hue readable.
 void setLitColour(Ogre::Pass& pass, const Ogre::ColourValue& colour) {
   pass.setLightingEnabled(true);
   pass.setDiffuse(colour);
@@ -27,21 +25,24 @@ void setLitColour(Ogre::Pass& pass, const Ogre::ColourValue& colour) {
   pass.setShininess(8.f);
 }
 
-void setBlend(Ogre::Pass& pass, float alpha) {
-  if (alpha < 0.999f) {
-    pass.setSceneBlending(Ogre::SBT_TRANSPARENT_ALPHA);
-    pass.setDepthWriteEnabled(false);
-  } else {
-    pass.setSceneBlending(Ogre::SBT_REPLACE);
-    pass.setDepthWriteEnabled(true);
-  }
+Ogre::Pass& firstPass(const Ogre::MaterialPtr& material) {
+  return *material->getTechnique(0)->getPass(0);
+}
+
+/// Blended without depth writes below kOpaqueAlpha (OGRE then sorts it back to front).
+void setAlpha(Ogre::Pass& pass, float alpha) {
+  Ogre::ColourValue colour = pass.getDiffuse();
+  colour.a = alpha;
+  pass.setDiffuse(colour);
+  const bool opaque = alpha >= avatar_view::kOpaqueAlpha;
+  pass.setSceneBlending(opaque ? Ogre::SBT_REPLACE : Ogre::SBT_TRANSPARENT_ALPHA);
+  pass.setDepthWriteEnabled(opaque);
 }
 
 Ogre::MaterialPtr plainMaterial(const std::string& name, const Ogre::ColourValue& colour) {
   Ogre::MaterialPtr material = Ogre::MaterialManager::getSingleton().create(name, kGroup);
-  Ogre::Pass& pass = *material->getTechnique(0)->getPass(0);
-  setLitColour(pass, colour);
-  setBlend(pass, colour.a);
+  setLitColour(firstPass(material), colour);
+  setAlpha(firstPass(material), colour.a);
   return material;
 }
 
@@ -49,20 +50,16 @@ Ogre::MaterialPtr plainMaterial(const std::string& name, const Ogre::ColourValue
 
 AvatarMaterials::AvatarMaterials() {
   skin_ = uniqueName("skin");
-  skin_see_through_ = uniqueName("skin_see_through");
-  context_ = uniqueName("context");
   faded_context_ = uniqueName("faded_context");
   skin_material_ = plainMaterial(skin_, Ogre::ColourValue(0.86f, 0.86f, 0.84f, 1.f));
-  skin_see_through_material_ =
-      plainMaterial(skin_see_through_, Ogre::ColourValue(0.86f, 0.86f, 0.84f, 0.2f));
-  fixed_ = {skin_material_, skin_see_through_material_,
-            plainMaterial(context_, Ogre::ColourValue(0.74f, 0.72f, 0.70f, 1.f)),
-            plainMaterial(faded_context_, Ogre::ColourValue(0.74f, 0.72f, 0.70f, 0.25f))};
+  faded_context_material_ =
+      plainMaterial(faded_context_, Ogre::ColourValue(0.74f, 0.72f, 0.70f, 0.25f));
 }
 
 AvatarMaterials::~AvatarMaterials() {
   clearEncoded();
-  for (const auto& material : fixed_) Ogre::MaterialManager::getSingleton().remove(material);
+  Ogre::MaterialManager::getSingleton().remove(skin_material_);
+  Ogre::MaterialManager::getSingleton().remove(faded_context_material_);
 }
 
 std::string AvatarMaterials::uniqueName(const std::string& stem) {
@@ -71,47 +68,62 @@ std::string AvatarMaterials::uniqueName(const std::string& stem) {
   return "vicc_avatar/" + stem + "/" + std::to_string(counter_++);
 }
 
-void AvatarMaterials::setSkinAlpha(float skin_alpha, float see_through_alpha) {
-  const std::pair<Ogre::MaterialPtr, float> skins[] = {
-      {skin_material_, skin_alpha},
-      {skin_see_through_material_, std::min(skin_alpha, 1.f - see_through_alpha)}};
-  for (const auto& [material, alpha] : skins) {
-    Ogre::Pass& pass = *material->getTechnique(0)->getPass(0);
-    Ogre::ColourValue colour = pass.getDiffuse();
-    colour.a = alpha;
-    pass.setDiffuse(colour);
-    setBlend(pass, alpha);
-    // A see-through skin still hides what lies behind it from later (skin mark) passes.
-    pass.setDepthWriteEnabled(true);
-  }
+void AvatarMaterials::setSkinAlpha(float skin_alpha) {
+  Ogre::Pass& pass = firstPass(skin_material_);
+  setAlpha(pass, skin_alpha);
+  // A translucent skin still hides what lies behind it from the skin marks.
+  pass.setDepthWriteEnabled(true);
 }
 
 Ogre::TexturePtr AvatarMaterials::texture(const avatar_view::TextureState& state) {
+  for (const auto& [made, texture] : textures_)
+    if (avatar_view::sameTextureImage(made, state)) return texture;
   const avatar_view::GreyImage grey = avatar_view::textureImage(state, kTextureSize);
   Ogre::Image image;
   image.loadDynamicImage(const_cast<Ogre::uchar*>(grey.pixels.data()), grey.size, grey.size, 1,
                          Ogre::PF_L8);
   Ogre::TexturePtr texture =
       Ogre::TextureManager::getSingleton().loadImage(uniqueName("texture"), kGroup, image);
-  textures_.push_back(texture);
+  textures_.emplace_back(state, texture);
   return texture;
 }
 
-std::string AvatarMaterials::encoded(const Rgba& color, const avatar_view::TextureState& state) {
-  const std::string name = uniqueName("encoded");
-  Ogre::MaterialPtr material =
-      plainMaterial(name, Ogre::ColourValue(color.r, color.g, color.b, color.a));
-  Ogre::Pass& pass = *material->getTechnique(0)->getPass(0);
-  if (state.kind != avatar_view::TextureKind::kNone)
-    pass.createTextureUnitState()->setTexture(texture(state));
-  material->load();
-  encoded_.push_back(material);
-  return name;
+void AvatarMaterials::applyInnerOpacity(Encoded& encoded) const {
+  if (!encoded.inner) return;
+  Ogre::Pass& pass = firstPass(encoded.material);
+  setAlpha(pass,
+           inner_opacity_ > 0.f ? encoded.alpha * std::min(inner_opacity_, 1.f) : encoded.alpha);
+  // Blended but depth-writing: the faded structures in front of it are depth-tested against it.
+  pass.setDepthWriteEnabled(true);
+}
+
+std::vector<std::string> AvatarMaterials::setEncoded(
+    const std::vector<avatar_view::MaterialGroup>& groups) {
+  clearEncoded();
+  std::vector<std::string> names;
+  for (const avatar_view::MaterialGroup& group : groups) {
+    names.push_back(uniqueName("encoded"));
+    const Rgba& c = group.color;
+    Encoded encoded{plainMaterial(names.back(), Ogre::ColourValue(c.r, c.g, c.b, c.a)), c.a,
+                    group.inner};
+    if (group.texture.kind != avatar_view::TextureKind::kNone)
+      firstPass(encoded.material).createTextureUnitState()->setTexture(texture(group.texture));
+    applyInnerOpacity(encoded);
+    encoded.material->load();
+    encoded_.push_back(encoded);
+  }
+  return names;
+}
+
+void AvatarMaterials::setInnerOpacity(float opacity) {
+  inner_opacity_ = opacity;
+  for (Encoded& encoded : encoded_) applyInnerOpacity(encoded);
 }
 
 void AvatarMaterials::clearEncoded() {
-  for (const auto& material : encoded_) Ogre::MaterialManager::getSingleton().remove(material);
-  for (const auto& texture : textures_) Ogre::TextureManager::getSingleton().remove(texture);
+  for (const auto& encoded : encoded_)
+    Ogre::MaterialManager::getSingleton().remove(encoded.material);
+  for (const auto& entry : textures_) Ogre::TextureManager::getSingleton().remove(entry.second);
   encoded_.clear();
   textures_.clear();
 }

@@ -3,6 +3,8 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "vicc_anatomy_viz/avatar_view/procedural_texture.hpp"
 
@@ -33,7 +35,19 @@ void addMeshSection(Ogre::ManualObject& object, const avatar::TriangleMesh& mesh
   const bool has_normals = mesh.normals.size() == mesh.vertices.size();
   const std::size_t count = triangles ? triangles->size() : mesh.triangles.size();
   object.begin(material, Ogre::RenderOperation::OT_TRIANGLE_LIST);
+  // With vertex normals every mesh vertex is emitted once and shared by its triangles (the
+  // vertex stage, fixed-function lighting included, runs once per vertex, not per corner);
+  // with face normals each corner is its own vertex.
+  std::vector<std::int64_t> emitted_index(has_normals ? mesh.vertices.size() : 0, -1);
   std::uint32_t emitted = 0;
+  const auto corner = [&](int vertex, const Eigen::Vector3f& face) -> std::uint32_t {
+    if (has_normals && emitted_index[vertex] >= 0)
+      return static_cast<std::uint32_t>(emitted_index[vertex]);
+    const Eigen::Vector3f normal = has_normals ? mesh.normals[vertex] : face;
+    addVertex(object, mesh.vertices[vertex] + lift * normal, normal, texture_frequency);
+    if (has_normals) emitted_index[vertex] = emitted;
+    return emitted++;
+  };
   for (std::size_t t = 0; t < count; ++t) {
     const int index = triangles ? (*triangles)[t] : static_cast<int>(t);
     if (index < 0 || index >= static_cast<int>(mesh.triangles.size())) continue;
@@ -42,12 +56,9 @@ void addMeshSection(Ogre::ManualObject& object, const avatar::TriangleMesh& mesh
     const Eigen::Vector3f face = (mesh.vertices[triangle[1]] - mesh.vertices[triangle[0]])
                                      .cross(mesh.vertices[triangle[2]] - mesh.vertices[triangle[0]])
                                      .normalized();
-    for (int corner = 0; corner < 3; ++corner) {
-      const Eigen::Vector3f normal = has_normals ? mesh.normals[triangle[corner]] : face;
-      addVertex(object, mesh.vertices[triangle[corner]] + lift * normal, normal, texture_frequency);
-    }
-    object.triangle(emitted, emitted + 1, emitted + 2);
-    emitted += 3;
+    const std::uint32_t a = corner(triangle[0], face), b = corner(triangle[1], face),
+                        c = corner(triangle[2], face);
+    object.triangle(a, b, c);
   }
   object.end();
 }

@@ -1,15 +1,23 @@
 #include "vicc_anatomy_viz/rviz/avatar_visual.hpp"
 
+#include <algorithm>
+
 #include "vicc_anatomy_viz/rviz/avatar_meshes.hpp"
 
 namespace vicc_anatomy_viz::rviz_plugin {
 namespace {
 
-/// Skin marks sit this far above the skin (no depth fighting), proxies a little higher.
+/// Skin marks over a skin they do not replace sit this far above it (no depth fighting),
+/// proxies a little higher.
 constexpr float kRegionLift = 0.0015f;
 constexpr float kProxyLift = 0.003f;
 
 }  // namespace
+
+float innerOpacity(const VisualOptions& options) {
+  const float through_skin = 1.f - std::clamp(options.skin_alpha, 0.f, 1.f);
+  return std::max(through_skin, options.transparency ? options.see_through_alpha : 0.f);
+}
 
 AvatarVisual::AvatarVisual(rviz::DisplayContext* context, Ogre::SceneNode* parent)
     : context_(context),
@@ -22,7 +30,6 @@ AvatarVisual::~AvatarVisual() {
   clearEncoded();
   for (Context& structure : context_structures_) destroyObject(structure.object);
   destroyObject(skin_);
-  destroyObject(skin_see_through_);
   scene_manager_->removeRenderQueueListener(&stencil_);
   scene_manager_->destroySceneNode(node_);
 }
@@ -46,23 +53,28 @@ void AvatarVisual::setModel(std::shared_ptr<const avatar::AvatarModel> model) {
   for (Context& structure : context_structures_) destroyObject(structure.object);
   context_structures_.clear();
   destroyObject(skin_);
-  destroyObject(skin_see_through_);
+  skin_triangles_.clear();
   model_ = std::move(model);
   if (!model_) return;
-  skin_ = newObject(kSkinQueue);
-  addMeshSection(*skin_, model_->skin, nullptr, materials_.skin(), 0.f, 0.f);
-  skin_see_through_ = newObject(kSkinSeeThroughQueue);
-  addMeshSection(*skin_see_through_, model_->skin, nullptr, materials_.skinSeeThrough(), 0.f, 0.f);
   for (const avatar::AvatarStructure& structure : model_->structures) {
     Context entry;
     if (!structure.mesh.triangles.empty()) {
-      entry.object = newObject(kContextQueue);
-      addMeshSection(*entry.object, structure.mesh, nullptr, materials_.context(), 0.f, 0.f);
+      entry.object = newObject(kOccluderQueue);
+      addMeshSection(*entry.object, structure.mesh, nullptr, materials_.fadedContext(), 0.f, 0.f);
+      entry.object->setVisible(false);
       entry.bounds = avatar_view::boundingSphere(structure.mesh);
     }
     context_structures_.push_back(entry);
   }
   setState(state_, on_select_);
+}
+
+void AvatarVisual::rebuildSkin(const std::vector<int>& triangles) {
+  if (skin_ && triangles == skin_triangles_) return;
+  destroyObject(skin_);
+  skin_triangles_ = triangles;
+  skin_ = newObject(kSkinQueue);
+  addMeshSection(*skin_, model_->skin, &skin_triangles_, materials_.skin(), 0.f, 0.f);
 }
 
 void AvatarVisual::clearEncoded() {
@@ -72,30 +84,32 @@ void AvatarVisual::clearEncoded() {
   }
   encoded_.clear();
   materials_.clearEncoded();
-  for (Context& structure : context_structures_)
-    if (structure.object) structure.object->setVisible(true);
+  for (Context& structure : context_structures_) {
+    structure.encoded = structure.faded = false;
+    if (structure.object) structure.object->setVisible(false);
+  }
 }
 
-void AvatarVisual::buildEncoded(const avatar_view::DrawItem& item,
-                                const SelectCallback& on_select) {
+void AvatarVisual::buildEncoded(const avatar_view::DrawItem& item, const std::string& material,
+                                bool replaces_skin, const SelectCallback& on_select) {
   using avatar_view::TargetKind;
   Encoded entry;
   entry.inner = item.target == TargetKind::kStructureMesh;
-  const std::string material = materials_.encoded(item.color, item.texture);
   const float frequency = item.texture.frequency;
   entry.object = newObject(entry.inner ? kEncodedQueue : kSkinMarkQueue);
   const auto index = static_cast<std::size_t>(item.target_index);
   if (item.target == TargetKind::kSkinRegion) {
+    // A region that replaces the skin under it lies exactly on the skin: no seam at its border.
     addMeshSection(*entry.object, model_->skin, &model_->skin_regions[index].triangles, material,
-                   kRegionLift, frequency);
+                   replaces_skin ? 0.f : kRegionLift, frequency);
   } else if (item.target == TargetKind::kProxy) {
     addProxyDisc(*entry.object, model_->structures[index].proxy, material, kProxyLift, frequency);
   } else {
     addMeshSection(*entry.object, model_->structures[index].mesh, nullptr, material, 0.f,
                    frequency);
     entry.bounds = avatar_view::boundingSphere(model_->structures[index].mesh);
-    // The encoded object replaces the neutral one of the same structure.
-    if (Ogre::ManualObject* plain = context_structures_[index].object) plain->setVisible(false);
+    // The encoded object replaces the faded one of the same structure.
+    context_structures_[index].encoded = true;
   }
   entry.handler = std::make_unique<StructureSelectionHandler>(context_, item.display_name,
                                                               item.overlay_text, on_select);
@@ -111,22 +125,27 @@ void AvatarVisual::setState(const avatar_view::AvatarDrawState& state,
   cycle_ = std::make_unique<avatar_view::AlternationCycle>(state_, options_.alternation_period_s);
   last_step_ = -1;
   if (!model_) return;
-  for (const avatar_view::DrawItem& item : state_.items) buildEncoded(item, on_select);
+  const avatar_view::RenderBatches batches = avatar_view::planBatches(state_, *model_);
+  const std::vector<std::string> materials = materials_.setEncoded(batches.materials);
+  rebuildSkin(batches.skin_triangles);
+  for (std::size_t i = 0; i < state_.items.size(); ++i)
+    buildEncoded(state_.items[i], materials[batches.material_of_item[i]], batches.replaces_skin[i],
+                 on_select);
 }
 
 void AvatarVisual::setOptions(const VisualOptions& options) {
   const bool rebuild = options.alternation_period_s != options_.alternation_period_s;
   options_ = options;
-  materials_.setSkinAlpha(options_.skin_alpha, options_.see_through_alpha);
-  stencil_.setEnabled(options_.transparency);
+  materials_.setSkinAlpha(options_.skin_alpha);
+  materials_.setInnerOpacity(innerOpacity(options_));
+  stencil_.setEnabled(innerOpacity(options_) > 0.f);
   if (rebuild) setState(state_, on_select_);
 }
 
 void AvatarVisual::fadeOccluders(const avatar_view::CameraModel& camera) {
   std::vector<avatar_view::Sphere> targets;
-  for (std::size_t i = 0; i < encoded_.size(); ++i)
-    if (encoded_[i].inner && encoded_[i].object->getVisible())
-      targets.push_back(encoded_[i].bounds);
+  for (const Encoded& entry : encoded_)
+    if (entry.inner && entry.object->getVisible()) targets.push_back(entry.bounds);
   std::vector<avatar_view::Sphere> candidates;
   for (const Context& structure : context_structures_) candidates.push_back(structure.bounds);
   std::vector<bool> occludes(candidates.size(), false);
@@ -134,10 +153,10 @@ void AvatarVisual::fadeOccluders(const avatar_view::CameraModel& camera) {
     occludes = avatar_view::findOccluders(targets, candidates, camera);
   for (std::size_t i = 0; i < context_structures_.size(); ++i) {
     Context& structure = context_structures_[i];
-    if (!structure.object || structure.faded == occludes[i]) continue;
-    structure.faded = occludes[i];
-    structure.object->setMaterialName(
-        0, structure.faded ? materials_.fadedContext() : materials_.context());
+    const bool faded = occludes[i] && !structure.encoded;
+    if (!structure.object || structure.faded == faded) continue;
+    structure.faded = faded;
+    structure.object->setVisible(faded);
   }
 }
 

@@ -24,33 +24,25 @@ void setStencil(Ogre::CompareFunction compare, Ogre::StencilOperation pass_opera
 
 void SeeThroughStencil::renderQueueStarted(Ogre::uint8 queue, const Ogre::String& /*invocation*/,
                                            bool& skip) {
-  Ogre::RenderSystem& render_system = *Ogre::Root::getSingleton().getRenderSystem();
-  // rviz's selection renders the scene with the "Pick..." material schemes, painting what has
-  // no pick handle (the skin) black: without the see-through skin there, a click on the
-  // see-through part reaches the encoded structure the user sees.
+  // rviz's selection renders the scene with the "Pick..." material schemes: without the faded
+  // occluders there, a click on a see-through part reaches the encoded structure the user sees.
   const bool picking =
       Ogre::MaterialManager::getSingleton().getActiveScheme().rfind("Pick", 0) == 0;
-  if (queue == kSkinSeeThroughQueue) skip = !enabled_ || picking;
+  if (queue == kOccluderQueue) skip = !enabled_ || picking;
   if (!enabled_) return;
-  switch (queue) {
-    case kEncodedQueue:
-      render_system.clearFrameBuffer(Ogre::FBT_STENCIL, Ogre::ColourValue::Black, 1.f, 0);
-      setStencil(Ogre::CMPF_ALWAYS_PASS, Ogre::SOP_REPLACE);
-      break;
-    case kSkinQueue:
-      setStencil(Ogre::CMPF_NOT_EQUAL, Ogre::SOP_KEEP);
-      break;
-    case kSkinSeeThroughQueue:
-      setStencil(Ogre::CMPF_EQUAL, Ogre::SOP_KEEP);
-      break;
-    default:
-      break;
+  if (queue == kEncodedQueue) {
+    // Depth and stencil share one buffer: clearing both is one plain clear.
+    Ogre::Root::getSingleton().getRenderSystem()->clearFrameBuffer(
+        Ogre::FBT_DEPTH | Ogre::FBT_STENCIL, Ogre::ColourValue::Black, 1.f, 0);
+    setStencil(Ogre::CMPF_ALWAYS_PASS, Ogre::SOP_REPLACE);
+  } else if (queue == kOccluderQueue) {
+    setStencil(Ogre::CMPF_EQUAL, Ogre::SOP_KEEP);
   }
 }
 
 void SeeThroughStencil::renderQueueEnded(Ogre::uint8 queue, const Ogre::String& /*invocation*/,
                                          bool& /*repeat*/) {
-  if (queue == kEncodedQueue || queue == kSkinQueue || queue == kSkinSeeThroughQueue)
+  if (queue == kEncodedQueue || queue == kOccluderQueue)
     Ogre::Root::getSingleton().getRenderSystem()->setStencilCheckEnabled(false);
 }
 

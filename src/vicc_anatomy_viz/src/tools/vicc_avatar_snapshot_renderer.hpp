@@ -31,6 +31,8 @@ class AvatarRenderer {
   ~AvatarRenderer();
 
   rviz_plugin::AvatarDisplay& display() { return *display_; }
+  /// rviz's manager (its update loop renders the window like rviz does; the FPS bench).
+  rviz::VisualizationManager& manager() { return *manager_; }
   /// Processes Qt and ROS events until the display drew more than `previous` statuses
   /// (false after `timeout_s`).
   bool waitForStatus(unsigned previous, double timeout_s);

@@ -167,5 +167,32 @@ TEST(AvatarManifestTest, AtlasMeshReplacesTheGeneratedShapeWithoutCodeChanges) {
   EXPECT_EQ(model.structures.size(), 1u);
 }
 
+TEST(AvatarManifestTest, GeneratedPartsFormOneStructure) {
+  const std::string belly = "{bone: shank, from: 0.4, to: 0.95, azimuth: 45}";
+  const std::string tendon = "{bone: foot, from: 0.1, to: 0.9, azimuth: 0, depth: 0.4}";
+  const auto build = [](const std::string& generated) {
+    return buildAvatarModel(
+        test::writeTemporary("parts_manifest.yaml",
+                             manifestWith(kHumanZae,
+                                          "  - {id: extensor_hallucis_longus, sides: [right],\n"
+                                          "     region: r, system: s, generated: " +
+                                              generated + "}\n")),
+        test::catalog());
+  };
+  const TriangleMesh shank_part = build(belly).structures.at(0).mesh;
+  const TriangleMesh foot_part = build(tendon).structures.at(0).mesh;
+  const TriangleMesh both = build("[" + belly + ", " + tendon + "]").structures.at(0).mesh;
+  ASSERT_EQ(both.vertices.size(), shank_part.vertices.size() + foot_part.vertices.size());
+  ASSERT_EQ(both.triangles.size(), shank_part.triangles.size() + foot_part.triangles.size());
+  ASSERT_EQ(both.normals.size(), both.vertices.size());
+  // The second part's triangles index its own vertices, after the first part's.
+  const Eigen::Vector3i last = both.triangles.back();
+  EXPECT_EQ(both.vertices[last[0]], foot_part.vertices[foot_part.triangles.back()[0]]);
+  EXPECT_NEAR(signedVolume(both), signedVolume(shank_part) + signedVolume(foot_part), 1e-9);
+  const std::string message = errorOf(manifestWith(
+      kHumanZae, "  - {id: soleus, sides: [left], region: r, system: s, generated: []}\n"));
+  EXPECT_NE(message.find("at least one part"), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace vicc_anatomy_viz::avatar

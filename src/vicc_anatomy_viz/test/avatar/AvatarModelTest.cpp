@@ -232,5 +232,46 @@ TEST(AvatarModelTest, SmallStructuresHaveProxiesOnTheSkinAboveThem) {
   EXPECT_NEAR(patellar->proxy.centre.z(), knee.z(), 0.05f);
 }
 
+/// The share of `structure`'s front-facing vertices (normal towards +x) from which a ray
+/// towards the front (the camera of the front view) meets none of `in_front`.
+double shareSeenFromTheFront(const AvatarStructure& structure,
+                             const std::vector<const AvatarStructure*>& in_front) {
+  int facing = 0, seen = 0;
+  for (std::size_t i = 0; i < structure.mesh.vertices.size(); ++i) {
+    if (structure.mesh.normals[i].x() < 0.5f) continue;
+    ++facing;
+    const Eigen::Vector3f start = structure.mesh.vertices[i] + 0.001f * Eigen::Vector3f::UnitX();
+    bool hidden = false;
+    for (const AvatarStructure* other : in_front)
+      hidden = hidden || castRay(other->mesh, start, Eigen::Vector3f::UnitX()).has_value();
+    seen += !hidden;
+  }
+  return facing ? static_cast<double>(seen) / facing : 0.0;
+}
+
+TEST(AvatarModelTest, TheExtensorHallucisIsSeenFromTheFrontAndReachesTheBigToe) {
+  const AvatarBuild& build = defaultAvatar();
+  for (Side side : {Side::kLeft, Side::kRight}) {
+    const AvatarStructure* ehl = build.model.structure("extensor_hallucis_longus", side);
+    const AvatarStructure* ta = build.model.structure("tibialis_anterior", side);
+    const AvatarStructure* edl = build.model.structure("extensor_digitorum_longus", side);
+    ASSERT_TRUE(ehl && ta && edl);
+    // Its own finding must be readable from the front: not hidden behind TA and EDL (on the
+    // first model 80 % of its front-facing surface lay behind the tibialis).
+    EXPECT_GT(shareSeenFromTheFront(*ehl, {ta, edl}), 0.6) << toString(side);
+    // The tendon runs over the dorsum of the foot towards the big toe (medial of the foot's
+    // centre line), in front of and below the ankle.
+    const Eigen::Vector3f& ankle = build.landmarks.point("ankle_" + toString(side));
+    const Eigen::Vector3f& mtp = build.landmarks.point("mtp_" + toString(side));
+    float most_forward = -1e9f;
+    Eigen::Vector3f tip = Eigen::Vector3f::Zero();
+    for (const Eigen::Vector3f& v : ehl->mesh.vertices)
+      if (v.x() > most_forward) most_forward = (tip = v).x();
+    EXPECT_GT(tip.x(), mtp.x()) << toString(side);
+    EXPECT_LT(tip.z(), ankle.z()) << toString(side);
+    EXPECT_LT(std::fabs(tip.y()), std::fabs(mtp.y())) << toString(side) << ": not medial";
+  }
+}
+
 }  // namespace
 }  // namespace vicc_anatomy_viz::avatar

@@ -164,6 +164,24 @@ class AvatarDisplayRostest : public ::testing::Test {
     return avatar_view::boundingSphere(structure->mesh).centre;
   }
 
+  /// The centroid of a structure's vertices on the foot (below `height`) that face the camera.
+  Eigen::Vector3f footPoint(const std::string& id, Side side, float height) {
+    const avatar::AvatarStructure* structure = model().structure(id, side);
+    EXPECT_NE(structure, nullptr) << id;
+    const Eigen::Vector3f eye = renderer_->orbit().eye();
+    Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+    int count = 0;
+    for (std::size_t i = 0; structure && i < structure->mesh.vertices.size(); ++i) {
+      const Eigen::Vector3f& v = structure->mesh.vertices[i];
+      if (v.z() < height && structure->mesh.normals[i].dot((eye - v).normalized()) > 0.3f) {
+        sum += v;
+        ++count;
+      }
+    }
+    EXPECT_GT(count, 0) << id << " has no camera-facing part on the foot";
+    return count ? Eigen::Vector3f(sum / static_cast<float>(count)) : sum;
+  }
+
   void expectHue(const QImage& image, const Eigen::Vector3f& point, const Rgba& expected,
                  const std::string& what) {
     const PixelSample found = sample(image, project(point));
@@ -205,8 +223,14 @@ TEST_F(AvatarDisplayRostest, PreOperativeFindingsAreDrawnInTheirColoursOnTheirSi
             "right tibialis anterior paresis (through the skin)");
   expectHue(image, structureCentre("patellar_ligament", Side::kRight), reflex->color,
             "right patellar reflex proxy");
-  // Nothing on the other side.
-  expectUncoloured(image, facingPoint("dermatome_L5", Side::kRight), "right L5");
+  // The right EHL's moderate paresis through the skin of the dorsum of the foot (its tendon).
+  const auto* ehl = drawn("paresis", "extensor_hallucis_longus", Side::kRight);
+  ASSERT_NE(ehl, nullptr);
+  expectHue(image, footPoint("extensor_hallucis_longus", Side::kRight, 0.06f), ehl->color,
+            "right EHL tendon on the dorsum of the foot");
+  // No pain on the other side (the right L5 band covers the dorsum of the foot, where the
+  // right EHL's tendon shows its paresis through the skin).
+  expectNotHue(image, facingPoint("dermatome_L5", Side::kRight), pain->color, "right L5");
   // (The left L5 band covers the lateral shin: the left tibialis may show the pain's red.)
   expectNotHue(image, structureCentre("tibialis_anterior", Side::kLeft), paresis->color,
                "left tibialis");

@@ -51,7 +51,9 @@ struct StructureEntry {
   std::string region;  ///< e.g. "upper limb"
   std::string system;  ///< e.g. "muscular system"
   std::string fma_id;  ///< the catalogue's, checked against the manifest's if it gives one
-  std::optional<GeneratedShape> generated;
+  /// Generated parts (empty: none), e.g. a muscle belly on the shank and its tendon over the
+  /// foot; the structure's mesh is their union.
+  std::vector<GeneratedShape> generated;
   std::optional<MeshSource> mesh;  ///< an atlas mesh instead of a generated shape
   std::optional<ProxyPlacement> proxy;
   std::string where;  ///< "file:line: structures[i]" for messages

@@ -14,7 +14,7 @@ namespace vicc_anatomy_viz::avatar {
 
 struct TriangleMesh {
   std::vector<Eigen::Vector3f> vertices;
-  std::vector<Eigen::Vector3f> normals;  ///< per vertex, unit length, pointing outwards
+  std::vector<Eigen::Vector3f> normals;    ///< per vertex, unit length, pointing outwards
   std::vector<Eigen::Vector3i> triangles;  ///< counter-clockwise seen from outside
 };
 
@@ -28,7 +28,7 @@ struct SkinProxy {
 
 /// One structure instance: a catalogue structure on one side ("none" for midline ones).
 struct AvatarStructure {
-  std::string structure_id;     ///< catalogue id, as in EncodedStructure.structure_id
+  std::string structure_id;  ///< catalogue id, as in EncodedStructure.structure_id
   Side side = Side::kNone;
   std::string structure_class;  ///< catalogue class: muscle, tendon, urethra, ...
   std::string display_name;     ///< e.g. "M. tibialis anterior (right)"
@@ -51,7 +51,7 @@ struct SkinRegion {
 
 struct AvatarModel {
   TriangleMesh skin;
-  std::vector<SkinRegion> skin_regions;   ///< dermatomes; together they cover the skin
+  std::vector<SkinRegion> skin_regions;  ///< dermatomes; together they cover the skin
   std::vector<AvatarStructure> structures;
 
   /// The structure instance or skin region findings call (id, side); nullptr if the model

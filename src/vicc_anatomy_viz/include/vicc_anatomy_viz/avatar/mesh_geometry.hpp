@@ -15,6 +15,10 @@ namespace vicc_anatomy_viz::avatar {
 /// Area-weighted vertex normals (unit length; triangles counter-clockwise from outside).
 std::vector<Eigen::Vector3f> vertexNormals(const TriangleMesh& mesh);
 
+/// Appends `part` (vertices, normals, triangles) to `mesh`: a structure made of several closed
+/// parts, e.g. a muscle belly and its tendon.
+void appendMeshPart(TriangleMesh& mesh, const TriangleMesh& part);
+
 /// Signed enclosed volume in m^3: positive when the triangles face outwards.
 double signedVolume(const TriangleMesh& mesh);
 

@@ -1,8 +1,7 @@
 #pragma once
-// The avatar's OGRE materials: the skin (opaque, and see-through for the pixels where it hides
-// an encoded structure) and the structures without a finding (neutral, no hue that could be
-// read as a category), and one material per encoded structure: its colour, lit, times its
-// procedural texture.
+// The avatar's OGRE materials: the skin, the faded look of an unencoded structure that hides
+// an encoded one, and one material per group of encoded items that look the same
+// (avatar_view::planBatches): their colour, lit, times their procedural texture.
 
 #include <string>
 #include <vector>
@@ -10,19 +9,18 @@
 #include <OGRE/OgreMaterial.h>
 #include <OGRE/OgreTexture.h>
 
-#include "vicc_anatomy_viz/avatar_view/draw_state.hpp"
+#include "vicc_anatomy_viz/avatar_view/render_batches.hpp"
 
 namespace vicc_anatomy_viz::rviz_plugin {
 
-/// Render queue groups, in drawing order (see SeeThroughStencil): encoded inner structures,
-/// the opaque skin, context structures (after the skin, so the depth test drops them where
-/// the skin hides them: most of their pixels are never shaded), the see-through skin, skin
-/// marks (regions, proxies).
-constexpr unsigned char kEncodedQueue = 60;
-constexpr unsigned char kSkinQueue = 61;
-constexpr unsigned char kContextQueue = 62;
-constexpr unsigned char kSkinSeeThroughQueue = 63;
-constexpr unsigned char kSkinMarkQueue = 64;
+/// Render queue groups, in drawing order (see SeeThroughStencil): the opaque skin (without
+/// the triangles opaque skin regions replace), skin marks (regions, proxies) depth-tested
+/// against it, the encoded inner structures (drawn over what hides them when seen through),
+/// and the faded unencoded structures in front of them.
+constexpr unsigned char kSkinQueue = 60;
+constexpr unsigned char kSkinMarkQueue = 61;
+constexpr unsigned char kEncodedQueue = 62;
+constexpr unsigned char kOccluderQueue = 63;
 
 class AvatarMaterials {
  public:
@@ -32,26 +30,32 @@ class AvatarMaterials {
   AvatarMaterials& operator=(const AvatarMaterials&) = delete;
 
   const std::string& skin() const { return skin_; }
-  const std::string& skinSeeThrough() const { return skin_see_through_; }
-  const std::string& context() const { return context_; }
   const std::string& fadedContext() const { return faded_context_; }
-  /// Skin opacity (1: opaque) and the opacity of an encoded structure seen through it.
-  void setSkinAlpha(float skin_alpha, float see_through_alpha);
+  void setSkinAlpha(float skin_alpha);
 
-  /// A new material for an encoded structure.
-  std::string encoded(const Rgba& color, const avatar_view::TextureState& texture);
-  /// Drops the materials and textures encoded() made (a new status arrived).
+  /// New materials for `groups` (the previous status's are dropped); the name of each group's.
+  /// Groups with the same texture image share one texture.
+  std::vector<std::string> setEncoded(const std::vector<avatar_view::MaterialGroup>& groups);
+  /// How opaque the inner encoded structures are drawn over what hides them (times their own
+  /// alpha); 0: not seen through, depth-ordered as they lie.
+  void setInnerOpacity(float opacity);
   void clearEncoded();
 
  private:
+  struct Encoded {
+    Ogre::MaterialPtr material;
+    float alpha = 1.f;  ///< the encoded colour's own alpha
+    bool inner = false;
+  };
   std::string uniqueName(const std::string& stem);
   Ogre::TexturePtr texture(const avatar_view::TextureState& texture);
+  void applyInnerOpacity(Encoded& encoded) const;
 
-  std::string skin_, skin_see_through_, context_, faded_context_;
-  std::vector<Ogre::MaterialPtr> encoded_;
-  std::vector<Ogre::TexturePtr> textures_;
-  Ogre::MaterialPtr skin_material_, skin_see_through_material_;
-  std::vector<Ogre::MaterialPtr> fixed_;
+  std::string skin_, faded_context_;
+  Ogre::MaterialPtr skin_material_, faded_context_material_;
+  std::vector<Encoded> encoded_;
+  std::vector<std::pair<avatar_view::TextureState, Ogre::TexturePtr>> textures_;
+  float inner_opacity_ = 0.f;
   unsigned counter_ = 0;
 };
 

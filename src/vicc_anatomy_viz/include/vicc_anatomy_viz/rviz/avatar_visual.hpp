@@ -1,13 +1,18 @@
 #pragma once
-// The avatar's OGRE scene (the Visual of the Display/Visual split): the skin and the
-// structures without a finding as context, one object per drawn encoded structure, skin
-// region or proxy; per frame the alternation and the view-dependent transparency.
+// The avatar's OGRE scene (the Visual of the Display/Visual split): the skin, one object per
+// drawn encoded structure, skin region or proxy (one pick handle each), and the unencoded
+// structures, shown only faded where they hide an encoded one; per frame the alternation and
+// the view-dependent transparency.
 //
-// View-dependent transparency (thesis 4.4.2.2, Fig. 4.3), both parts per frame:
-// - per pixel for the skin: SeeThroughStencil (the skin is drawn twice, opaque outside and
-//   see-through inside the pixels the encoded inner structures cover);
+// Batching (avatar_view::planBatches), rebuilt only when a status arrives: items that look the
+// same share a material and a texture; the skin object leaves out the triangles opaque skin
+// regions replace, so the skin is drawn once. View-dependent transparency (thesis 4.4.2.2,
+// Fig. 4.3), both parts per frame:
+// - per pixel for the skin: SeeThroughStencil (the encoded inner structures are drawn blended
+//   over the skin that hides them, nowhere else);
 // - per object for the inner context: structures whose projected bounding sphere overlaps
-//   an encoded structure's and lie in front of it (avatar_view::findOccluders) are faded.
+//   an encoded structure's and lie in front of it (avatar_view::findOccluders) are drawn
+//   faded over it; the others are not drawn (the opaque skin hides them).
 
 #include <functional>
 #include <memory>
@@ -25,6 +30,7 @@
 #include "vicc_anatomy_viz/avatar_view/alternation.hpp"
 #include "vicc_anatomy_viz/avatar_view/draw_state.hpp"
 #include "vicc_anatomy_viz/avatar_view/occlusion.hpp"
+#include "vicc_anatomy_viz/avatar_view/render_batches.hpp"
 #include "vicc_anatomy_viz/rviz/avatar_materials.hpp"
 #include "vicc_anatomy_viz/rviz/see_through_stencil.hpp"
 #include "vicc_anatomy_viz/rviz/structure_selection.hpp"
@@ -37,6 +43,11 @@ struct VisualOptions {
   float see_through_alpha = 0.8f;  ///< opacity of an encoded structure seen through the skin
   double alternation_period_s = 1.5;
 };
+
+/// How opaque the encoded inner structures are drawn over the skin that hides them: the
+/// see-through alpha with view-dependent transparency, at least what a translucent skin lets
+/// through; 0 when neither (the skin hides them).
+float innerOpacity(const VisualOptions& options);
 
 class AvatarVisual {
  public:
@@ -59,15 +70,18 @@ class AvatarVisual {
     avatar_view::Sphere bounds;
   };
   struct Context {
-    Ogre::ManualObject* object = nullptr;
+    Ogre::ManualObject* object = nullptr;  ///< null: the structure has no mesh
     avatar_view::Sphere bounds;
-    bool faded = false;
+    bool encoded = false;  ///< an encoded object of this structure replaces it
+    bool faded = false;    ///< shown faded in front of an encoded structure
   };
 
   Ogre::ManualObject* newObject(unsigned char queue);
   void destroyObject(Ogre::ManualObject*& object);
   void clearEncoded();
-  void buildEncoded(const avatar_view::DrawItem& item, const SelectCallback& on_select);
+  void rebuildSkin(const std::vector<int>& triangles);
+  void buildEncoded(const avatar_view::DrawItem& item, const std::string& material,
+                    bool replaces_skin, const SelectCallback& on_select);
   void fadeOccluders(const avatar_view::CameraModel& camera);
 
   rviz::DisplayContext* context_;
@@ -77,9 +91,9 @@ class AvatarVisual {
   VisualOptions options_;
   std::shared_ptr<const avatar::AvatarModel> model_;
   Ogre::ManualObject* skin_ = nullptr;
-  Ogre::ManualObject* skin_see_through_ = nullptr;
+  std::vector<int> skin_triangles_;  ///< the skin triangles skin_ holds
   SeeThroughStencil stencil_;
-  std::vector<Context> context_structures_;  ///< one per model structure (null: no mesh)
+  std::vector<Context> context_structures_;  ///< one per model structure
   avatar_view::AvatarDrawState state_;
   SelectCallback on_select_;
   std::vector<Encoded> encoded_;

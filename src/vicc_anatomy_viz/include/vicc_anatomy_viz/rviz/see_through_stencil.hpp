@@ -1,9 +1,12 @@
 #pragma once
-// Per-pixel view-dependent transparency of the skin (thesis 4.4.2.2, Fig. 4.3): the encoded
-// inner structures mark the pixels they cover in the stencil buffer; the opaque skin is drawn
-// only outside the marked pixels, a see-through copy of the skin only inside them. So the skin
-// becomes semi-transparent exactly where it hides an encoded structure from the current
-// camera, and keeps its context everywhere else. Set up per render queue group.
+// View-dependent transparency per pixel (thesis 4.4.2.2, Fig. 4.3) in one extra pass: after
+// the opaque skin and the skin marks, the depth buffer is cleared and the encoded inner
+// structures are drawn blended over what hides them (among themselves depth-tested), marking
+// their pixels in the stencil buffer; the unencoded structures that lie in front of them
+// (faded, per object) are drawn only inside the marked pixels. So the skin becomes
+// semi-transparent exactly where it hides an encoded structure from the current camera and
+// keeps its context everywhere else, and no skin pixel is drawn twice. Set up per render
+// queue group.
 
 #include <OGRE/OgreRenderQueueListener.h>
 
@@ -11,6 +14,7 @@ namespace vicc_anatomy_viz::rviz_plugin {
 
 class SeeThroughStencil : public Ogre::RenderQueueListener {
  public:
+  /// Whether the encoded inner structures are drawn over what hides them.
   void setEnabled(bool enabled) { enabled_ = enabled; }
   void renderQueueStarted(Ogre::uint8 queue, const Ogre::String& invocation, bool& skip) override;
   void renderQueueEnded(Ogre::uint8 queue, const Ogre::String& invocation, bool& repeat) override;
