@@ -7,7 +7,9 @@ if(CATKIN_ENABLE_TESTING)
     test/core/IcpTest.cpp
     test/core/DepthPreprocessingTest.cpp
     test/core/CameraModelTest.cpp
-    test/core/ImuNoiseTest.cpp)
+    test/core/ImuNoiseTest.cpp
+    test/core/ImuSynchronizerTest.cpp
+    test/core/StillPhaseTest.cpp)
   target_compile_options(vicc_tracking_core_test PRIVATE ${VICC_WARNINGS})
   target_compile_definitions(vicc_tracking_core_test PRIVATE
     VICC_TRACKING_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config")

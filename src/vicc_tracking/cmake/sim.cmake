@@ -20,6 +20,7 @@ if(CATKIN_ENABLE_TESTING)
     test/sim/ScenarioTest.cpp
     test/sim/VisibleSurfaceTest.cpp
     test/sim/TrackerTest.cpp
+    test/sim/TrackerTuningTest.cpp
     test/sim/ExtrapolationErrorTest.cpp)
   target_compile_options(vicc_tracking_sim_test PRIVATE ${VICC_WARNINGS})
   target_link_libraries(vicc_tracking_sim_test vicc_tracking_sim gtest_main)

@@ -48,6 +48,9 @@ class FrameToModel {
   const SurfelFusion& fusion() const { return fusion_; }
   const FrameToModelConfig& config() const { return config_; }
   void reset() { fusion_.reset(); }
+  /// New fusion thresholds while running (the prediction's stable_confidence follows).
+  /// Throws std::invalid_argument; nothing changes then.
+  void setFusionConfig(const SurfelFusionConfig& fusion);
 
  private:
   FrameToModelConfig config_;

@@ -39,6 +39,9 @@ class SurfelFusion {
                              const cv::Mat1f* intensity = nullptr);
 
   void reset();
+  /// New thresholds (dynamic_reconfigure) from the next frame on; the model is kept. Throws
+  /// std::invalid_argument naming the field; nothing changes then.
+  void setConfig(const SurfelFusionConfig& config);
 
   const SurfelFusionConfig& config() const { return config_; }
   const SurfelVector& surfels() const { return surfels_; }
@@ -61,7 +64,7 @@ class SurfelFusion {
   void removeMarked(const std::vector<char>& remove);
 
   SurfelFusionConfig config_;
-  float min_normal_cosine_;
+  float min_normal_cosine_ = 1.f;
   SurfelVector surfels_;
   IndexMap index_map_;
   SurfelOrder surfel_order_;

@@ -27,6 +27,15 @@ FrameToModel::FrameToModel(const FrameToModelConfig& config)
   config_.validate();
 }
 
+void FrameToModel::setFusionConfig(const SurfelFusionConfig& fusion) {
+  FrameToModelConfig candidate = config_;
+  candidate.fusion = fusion;
+  candidate.prediction.stable_confidence = fusion.stable_confidence;
+  candidate.validate();
+  fusion_.setConfig(fusion);
+  config_ = candidate;
+}
+
 FrameToModelStep FrameToModel::afterFrame(vicc_tracking::Tracker& tracker,
                                           const vicc_tracking::FrameReport& report,
                                           const cv::Mat1f* intensity) {

@@ -34,10 +34,11 @@ void IndexMap::render(const SurfelVector& surfels, const Eigen::Isometry3f& came
     const float inv_z = 1.f / p.z();
     const float x = fx * p.x() * inv_z + cx;
     const float y = fy * p.y() * inv_z + cy;
-    if (!(x >= 0.f && y >= 0.f)) continue;  // truncation is floor from here on
+    // Bounds checked in float: a surfel near the camera plane projects beyond the int range,
+    // where the cast is undefined. Inside them, truncation is floor.
+    if (!(x >= 0.f && y >= 0.f && x < cols && y < rows)) continue;
     const int cell_u = static_cast<int>(x);
     const int cell_v = static_cast<int>(y);
-    if (cell_u >= cols || cell_v >= rows) continue;
     const int u = cell_u / factor, v = cell_v / factor;
     const size_t cell = (static_cast<size_t>(v) * width_ + u) * cells_per_pixel +
                         (cell_v - v * factor) * factor + (cell_u - u * factor);

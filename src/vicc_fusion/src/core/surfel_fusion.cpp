@@ -32,10 +32,13 @@ void SurfelFusionConfig::validate() const {
   require(sort_interval >= 0, "sort_interval must be >= 0 (0 = never)");
 }
 
-SurfelFusion::SurfelFusion(const SurfelFusionConfig& config)
-    : config_(config),
-      min_normal_cosine_(static_cast<float>(std::cos(config.max_normal_angle_deg * M_PI / 180.0))) {
-  config_.validate();
+SurfelFusion::SurfelFusion(const SurfelFusionConfig& config) { setConfig(config); }
+
+void SurfelFusion::setConfig(const SurfelFusionConfig& config) {
+  config.validate();
+  config_ = config;
+  min_normal_cosine_ = static_cast<float>(std::cos(config.max_normal_angle_deg * M_PI / 180.0));
+  weights_width_ = weights_height_ = 0;  // the cached weights depend on confidence_sigma
 }
 
 void SurfelFusion::reset() {

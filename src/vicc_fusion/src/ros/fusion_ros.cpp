@@ -53,7 +53,10 @@ FrameToModelConfig readFrameToModelConfig(const ros::NodeHandle& private_nh) {
 }
 
 FusionRos::FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-    : settings_(readFusionRosSettings(private_nh)), model_(readFrameToModelConfig(private_nh)) {
+    : settings_(readFusionRosSettings(private_nh)),
+      model_(readFrameToModelConfig(private_nh)),
+      reconfigure_(std::make_unique<FusionReconfigure>(ros::NodeHandle(private_nh, "fusion"),
+                                                       "fusion", model_.config().fusion)) {
   model_pub_ = private_nh.advertise<sensor_msgs::PointCloud2>("model", 1, true);
   save_service_ = private_nh.advertiseService("save_model", &FusionRos::onSaveModel, this);
   vicc_tracking::PreprocessingConfig preprocessing =
@@ -103,6 +106,7 @@ void FusionRos::onTrackedFrame(vicc_tracking::Tracker& tracker,
                                const vicc_tracking::FrameReport& report,
                                const sensor_msgs::Image& depth,
                                const Eigen::Isometry3d& map_alignment) {
+  if (const auto tuning = reconfigure_->takeChange()) model_.setFusionConfig(*tuning);
   try {
     const std::optional<cv::Mat1f> intensity = intensityFor(depth.header.stamp);
     const FrameToModelStep step =
@@ -127,6 +131,7 @@ void FusionRos::onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info) {
 }
 
 void FusionRos::onDepth(const sensor_msgs::ImageConstPtr& depth) {
+  if (const auto tuning = reconfigure_->takeChange()) model_.setFusionConfig(*tuning);
   if (!camera_) {
     ROS_WARN_THROTTLE(kWarnPeriod, "fusion: no valid camera_info yet; depth dropped");
     return;

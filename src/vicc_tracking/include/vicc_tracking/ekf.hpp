@@ -71,6 +71,10 @@ class InitializationEkf {
   InitializationEkf(const EkfConfig& config, const ImuCalibration& calibration,
                     const Eigen::Vector3d& gravity_ref);
 
+  /// New noise values (dynamic_reconfigure): Q and R from the next step on, P0 at the next
+  /// start(); the state and its covariance are kept. Throws std::invalid_argument if invalid.
+  void setConfig(const EkfConfig& config);
+
   /// t_0: zero velocity, translation and frame-to-frame rotation, P = P0 (Eq. 5.8).
   void start(const Quat4& base_orientation);
 

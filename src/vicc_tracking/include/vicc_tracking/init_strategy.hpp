@@ -36,6 +36,8 @@ class InitStrategy {
   virtual Eigen::Isometry3d predict(double stamp, const std::vector<ImuStep>& steps) = 0;
   /// The pose tracking settled on for that frame.
   virtual void update(double stamp, const Eigen::Isometry3d& imu_pose);
+  /// New EKF noise values (dynamic_reconfigure); strategies without a filter ignore them.
+  virtual void setEkfConfig(const EkfConfig& /*config*/) {}
 
  protected:
   PoseHistory history_;

@@ -18,7 +18,9 @@ class StillPhaseCalibrator {
  public:
   explicit StillPhaseCalibrator(const StillPhaseConfig& config);
 
-  void add(const ImuSample& sample);
+  /// Averages a reading; one with non-finite values or a stamp not after the last is ignored
+  /// (returns false), so it cannot bias the estimate or stretch the phase.
+  bool add(const ImuSample& sample);
   bool complete() const;
   /// Valid once complete().
   ImuCalibration calibration() const;

@@ -89,6 +89,11 @@ class Tracker {
   /// Should ICP against the model fail, the frame is aligned to the previous frame instead.
   bool useModelPrediction(DepthPyramid&& prediction);
 
+  /// Tuning changes while running (dynamic_reconfigure), from the next frame on. Throw
+  /// std::invalid_argument for an invalid config; nothing changes then.
+  void setIcpConfig(const IcpConfig& icp);
+  void setEkfConfig(const EkfConfig& ekf);
+
   void reset();
   TrackingState state() const { return state_; }
   const TrackerConfig& config() const { return config_; }

@@ -74,11 +74,16 @@ EkfState EkfState::fromVector(const Vector14d& x) {
 
 InitializationEkf::InitializationEkf(const EkfConfig& config, const ImuCalibration& calibration,
                                      const Eigen::Vector3d& gravity_ref)
-    : config_(config), calibration_(calibration), gravity_ref_(gravity_ref) {
-  config_.validate();
+    : calibration_(calibration), gravity_ref_(gravity_ref) {
+  setConfig(config);
+  start(identityQuat());
+}
+
+void InitializationEkf::setConfig(const EkfConfig& config) {
+  config.validate();
+  config_ = config;
   process_noise_ = blockDiagonal(config_.process_noise_rotation, config_.process_noise_velocity,
                                  config_.process_noise_position, config_.process_noise_base);
-  start(identityQuat());
 }
 
 void InitializationEkf::start(const Quat4& base_orientation) {

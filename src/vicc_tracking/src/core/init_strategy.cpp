@@ -162,13 +162,18 @@ class EkfInit : public InitStrategy {
     return guess.toIsometry();
   }
 
+  void setEkfConfig(const EkfConfig& config) override {
+    ekf_.setConfig(config);
+    context_.ekf = config;
+  }
+
   const InitializationEkf& filter() const { return ekf_; }
 
  private:
   InitContext context_;
   InitializationEkf ekf_;
-  std::vector<ImuStep> previous_steps_;  ///< the IMU steps of the interval predicted last
-  double previous_interval_end_ = -1.0;  ///< stamp that interval ended at
+  std::vector<ImuStep> previous_steps_;      ///< the IMU steps of the interval predicted last
+  double previous_interval_end_ = -1.0;      ///< stamp that interval ended at
   std::vector<Eigen::Vector3d> velocities_;  ///< at the newest and the one-older pose
 };
 

@@ -19,7 +19,11 @@ StillPhaseCalibrator::StillPhaseCalibrator(const StillPhaseConfig& config) : con
   config_.validate();
 }
 
-void StillPhaseCalibrator::add(const ImuSample& sample) {
+bool StillPhaseCalibrator::add(const ImuSample& sample) {
+  if (!std::isfinite(sample.stamp) || !sample.angular_velocity.allFinite() ||
+      !sample.linear_acceleration.allFinite() || (count_ > 0 && !(sample.stamp > last_stamp_))) {
+    return false;
+  }
   if (count_ == 0) first_stamp_ = sample.stamp;
   last_stamp_ = sample.stamp;
   ++count_;
@@ -27,6 +31,7 @@ void StillPhaseCalibrator::add(const ImuSample& sample) {
   gyro_sq_sum_ += sample.angular_velocity.cwiseAbs2();
   accel_sum_ += sample.linear_acceleration;
   accel_sq_sum_ += sample.linear_acceleration.cwiseAbs2();
+  return true;
 }
 
 bool StillPhaseCalibrator::complete() const {

@@ -73,6 +73,17 @@ Tracker::Tracker(const TrackerConfig& config, const Eigen::Isometry3d& imu_to_ca
 
 void Tracker::setCamera(const CameraModel& camera) { preprocessor_.setCamera(camera); }
 
+void Tracker::setIcpConfig(const IcpConfig& icp) {
+  icp_ = ProjectiveIcp(icp);  // validates
+  config_.icp = icp;
+}
+
+void Tracker::setEkfConfig(const EkfConfig& ekf) {
+  ekf.validate();
+  if (strategy_) strategy_->setEkfConfig(ekf);
+  config_.ekf = ekf;
+}
+
 bool Tracker::useModelPrediction(DepthPyramid&& prediction) {
   if (state_ != TrackingState::kOk || prediction.size() != reference_.size()) return false;
   for (size_t level = 0; level < prediction.size(); ++level) {

@@ -6,6 +6,7 @@
 #include "vicc_tracking/ros/conversions.hpp"
 #include "vicc_tracking/ros/parameters.hpp"
 #include "vicc_tracking/ros/status_message.hpp"
+#include "vicc_tracking/ros/tracker_reconfigure.hpp"
 
 namespace vicc_tracking {
 namespace {
@@ -15,6 +16,7 @@ constexpr double kWarnPeriod = 5.0;  // s between repeats of the same warning
 TrackerRos::TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     : config_(readTrackerConfig(private_nh)),
       settings_(readTrackerNodeSettings(private_nh)),
+      reconfigure_(std::make_unique<TrackerReconfigure>(private_nh, config_)),
       tf_listener_(tf_buffer_, nh) {
   odom_pub_ = private_nh.advertise<nav_msgs::Odometry>("odom", 10);
   path_pub_ = private_nh.advertise<nav_msgs::Path>("path", 1, true);
@@ -31,6 +33,8 @@ TrackerRos::TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
       toString(config_.init_strategy).c_str(), config_.preprocessing.pyramid_levels,
       depth_sub_.getTopic().c_str(), info_sub_.getTopic().c_str(), imu_sub_.getTopic().c_str());
 }
+
+TrackerRos::~TrackerRos() = default;
 
 void TrackerRos::onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info) {
   try {
@@ -156,6 +160,7 @@ void TrackerRos::processPending() {
 }
 
 void TrackerRos::processDepth(const sensor_msgs::ImageConstPtr& depth) {
+  reconfigure_->applyPending(config_, tracker_.get());
   if (depth->header.frame_id.empty()) {
     ROS_WARN_THROTTLE(kWarnPeriod, "tracker: depth image without frame_id dropped");
     return;

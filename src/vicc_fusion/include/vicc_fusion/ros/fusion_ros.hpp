@@ -23,6 +23,7 @@
 #include <vicc_msgs/SaveModel.h>
 
 #include "vicc_fusion/frame_to_model.hpp"
+#include "vicc_fusion/ros/fusion_reconfigure.hpp"
 #include "vicc_tracking/ros/tracker_ros.hpp"
 
 namespace vicc_fusion {
@@ -66,7 +67,8 @@ class FusionRos {
 
   FusionRosSettings settings_;
   FrameToModel model_;
-  std::string frame_id_;  ///< frame of the published model
+  std::unique_ptr<FusionReconfigure> reconfigure_;  ///< ~fusion thresholds while running
+  std::string frame_id_;                            ///< frame of the published model
   Eigen::Isometry3d model_to_frame_ = Eigen::Isometry3d::Identity();
   bool warned_full_ = false;
   ros::Time last_publish_;

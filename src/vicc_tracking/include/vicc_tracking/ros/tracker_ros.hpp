@@ -23,10 +23,13 @@
 
 namespace vicc_tracking {
 
+class TrackerReconfigure;
+
 class TrackerRos {
  public:
   /// Throws std::invalid_argument when a parameter is invalid.
   TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+  ~TrackerRos();
 
   /// Called after every accepted depth frame, in the depth callback, with the tracker (its
   /// currentFrame() is the frame just tracked), the report, the depth message and
@@ -54,6 +57,7 @@ class TrackerRos {
 
   TrackerConfig config_;
   TrackerNodeSettings settings_;
+  std::unique_ptr<TrackerReconfigure> reconfigure_;  ///< ~icp, ~ekf tuning while running
   FrameHook frame_hook_;
   std::unique_ptr<Tracker> tracker_;
   std::optional<CameraModel> camera_;
