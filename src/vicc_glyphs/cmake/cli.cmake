@@ -18,6 +18,11 @@ add_executable(vicc_glyph_bench bench/glyph_bench.cpp)
 target_compile_options(vicc_glyph_bench PRIVATE ${VICC_WARNINGS})
 target_include_directories(vicc_glyph_bench PRIVATE test/render)
 target_link_libraries(vicc_glyph_bench vicc_glyphs_render_reference vicc_glyphs_io)
+# Per-iteration residual, error estimate and error against the direct solve.
+add_executable(vicc_glyph_convergence bench/convergence_history.cpp)
+target_compile_options(vicc_glyph_convergence PRIVATE ${VICC_WARNINGS})
+target_include_directories(vicc_glyph_convergence PRIVATE test/render)
+target_link_libraries(vicc_glyph_convergence vicc_glyphs_render_reference vicc_glyphs_io)
 
 install(TARGETS vicc_glyph vicc_glyph_bench
   RUNTIME DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})

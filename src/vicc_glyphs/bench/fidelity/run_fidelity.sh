@@ -2,9 +2,12 @@
 # Fidelity benchmark of the SVG import + renderer against librsvg (rsvg-convert) on real icon
 # sets fetched from the npm registry at run time (nothing is committed). Per icon: both
 # renders at SIZE px, dark-mask IoU and mean absolute gray difference
-# (vicc_glyph_fidelity_compare), vicc_glyph's wall time, or its error message.
+# (vicc_glyph_fidelity_compare), vicc_glyph's wall time, the size of the imported DCI
+# (curves and Bezier control points: what the stroke outlining and refit produce), or the
+# error message.
 #
 #   bench/fidelity/run_fidelity.sh [PER_SET] [SIZE]     (defaults 30 icons per set, 256 px)
+#   VICC_FIDELITY_SETS="feather tabler-outline" bench/fidelity/run_fidelity.sh   (some sets)
 #
 # Needs: npm, rsvg-convert, a built workspace (devel/lib/vicc_glyphs/vicc_glyph and
 # vicc_glyph_fidelity_compare; set VICC_GLYPH_BIN_DIR to override). Writes
@@ -52,9 +55,10 @@ fetch() {  # npm package -> extracted directory
 }
 
 tsv="$results/icons.tsv"
-printf 'set\ticon\tstatus\tiou\tmae\tseconds\tmessage\n' > "$tsv"
+printf 'set\ticon\tstatus\tiou\tmae\tseconds\tmessage\tcurves\tcontrol_points\n' > "$tsv"
 for entry in "${sets[@]}"; do
   IFS='|' read -r name package directory <<< "$entry"
+  if [[ -n "${VICC_FIDELITY_SETS:-}" && " $VICC_FIDELITY_SETS " != *" $name "* ]]; then continue; fi
   root="$(fetch "$package")/$directory"
   mapfile -t all < <(find "$root" -maxdepth 1 -name '*.svg' | LC_ALL=C sort)
   count=${#all[@]}
@@ -64,18 +68,21 @@ for entry in "${sets[@]}"; do
   for (( i = 0; i < count && i / step < per_set; i += step )); do
     svg="${all[$i]}"
     icon="$(basename "$svg" .svg)"
-    ours="$work/ours.png" reference="$work/ref.png"
-    rm -f "$ours" "$reference"
+    ours="$work/ours.png" reference="$work/ref.png" dci="$work/ours.xml"
+    rm -f "$ours" "$reference" "$dci"
     if ! rsvg-convert -w "$size" "$svg" -o "$reference" 2>/dev/null; then
       printf '%s\t%s\treference-failed\t\t\t\t\n' "$name" "$icon" >> "$tsv"
       continue
     fi
     start=$(date +%s.%N)
-    if message="$("$bin/vicc_glyph" render "$svg" --size "$size" --out "$ours" 2>&1 >/dev/null)"; then
+    if message="$("$bin/vicc_glyph" render "$svg" --size "$size" --out "$ours" --dci "$dci" 2>&1 >/dev/null)"; then
       seconds=$(echo "$(date +%s.%N) - $start" | bc)
+      curves="$(grep -c '<curve[ >]' "$dci" || true)"
+      points="$(grep -o '<control_point' "$dci" | wc -l)"
       if line="$("$bin/vicc_glyph_fidelity_compare" "$ours" "$reference" 2>&1)"; then
         read -r _ iou _ mae _ <<< "$line"
-        printf '%s\t%s\tok\t%s\t%s\t%s\t\n' "$name" "$icon" "$iou" "$mae" "$seconds" >> "$tsv"
+        printf '%s\t%s\tok\t%s\t%s\t%s\t\t%s\t%s\n' "$name" "$icon" "$iou" "$mae" "$seconds" \
+          "$curves" "$points" >> "$tsv"
       else
         printf '%s\t%s\tcompare-failed\t\t\t%s\t%s\n' "$name" "$icon" "$seconds" "$line" >> "$tsv"
       fi

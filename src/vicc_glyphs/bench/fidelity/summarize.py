@@ -17,9 +17,11 @@ def main():
         sets.setdefault(row["set"], []).append(row)
     print(f"Icons rendered at {size} px wide by `vicc_glyph render` and `rsvg-convert`; IoU of the "
           "dark masks (gray < 0.5 over white), mean abs. gray difference (0..1), vicc_glyph wall "
-          "time per icon (whole process). Silent wrong = rendered with exit 0 but IoU < 0.95.\n")
-    print("| set | icons | ok | failed | IoU min | IoU p5 | IoU median | MAE mean | silent wrong | s/icon |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+          "time per icon (whole process), mean curves and Bezier control points of the imported DCI. "
+          "Silent wrong = rendered with exit 0 but IoU < 0.95.\n")
+    print("| set | icons | ok | failed | IoU min | IoU p5 | IoU median | MAE mean | silent wrong | "
+          "s/icon | curves | control points |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     failures = []
     worst = []
     for name, items in sets.items():
@@ -29,9 +31,13 @@ def main():
         mae = np.array([float(r["mae"]) for r in ok]) if ok else np.array([np.nan])
         seconds = [float(r["seconds"]) for r in items if r["seconds"]]
         silent = [r for r in ok if float(r["iou"]) < SILENT_WRONG_IOU]
+        curves = [float(r["curves"]) for r in ok if r.get("curves")]
+        points = [float(r["control_points"]) for r in ok if r.get("control_points")]
         print(f"| {name} | {len(items)} | {len(ok)} | {len(failed)} | {np.nanmin(iou):.4f} | "
               f"{np.nanpercentile(iou, 5):.4f} | {np.nanmedian(iou):.4f} | {np.nanmean(mae):.4f} | "
-              f"{len(silent)} | {np.mean(seconds) if seconds else float('nan'):.2f} |")
+              f"{len(silent)} | {np.mean(seconds) if seconds else float('nan'):.2f} | "
+              f"{np.mean(curves) if curves else float('nan'):.1f} | "
+              f"{np.mean(points) if points else float('nan'):.0f} |")
         failures += [(name, r["icon"], r["status"], r["message"]) for r in failed]
         worst += sorted(((float(r["iou"]), name, r["icon"]) for r in ok))[:3]
     print("\nFailures (with their messages):\n")

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
-#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -25,10 +24,19 @@ typedef float Float4 __attribute__((vector_size(16)));
 template <int C>
 using PixelValue = std::conditional_t<C == 3, Float4, float>;
 
+// What the conjugate-gradient loop of the finest level recorded (see MultigridReport).
+struct FineProgress {
+  int iterations = 0;
+  bool converged = false;
+  std::vector<double> residuals, error_estimates, updates;
+};
+
 template <int C>
 class Multigrid {
   using Px = PixelValue<C>;
   using Field = render_detail::PixelVector<Px>;
+  // Dot products per channel, in double: a level can have 10^7 pixels.
+  using Sum = std::array<double, C>;
 
  public:
   // Sets up the levels for `problems`, reusing the memory of the previous solve.
@@ -37,23 +45,22 @@ class Multigrid {
     options_ = options;
     const size_t count = problems.size();
     levels_.resize(count);
+    free_counts_.resize(count);
     u_.resize(count);
     f_.resize(count);
-    e_.resize(count);
     // Fields are not zero-filled (fresh memory would be touched twice): every interior value
     // is written before it is read, and only the ghost borders need zeros.
     for (size_t l = 0; l < count; ++l) {
       makeLevel(problems[l], levels_[l]);
+      free_counts_[l] =
+          static_cast<size_t>(std::count_if(problems[l].fixed.begin(), problems[l].fixed.end(),
+                                            [](std::uint8_t fixed) { return !fixed; }));
       allocateField(levels_[l], u_[l]);
-      if (l + 1 < count) {  // the coarsest level gets no coarse-grid correction
-        labelFreeComponents(levels_[l]);
-        // Scaled corrections only happen inside the recursion (see applyCorrection).
-        if (l > 0) allocateField(levels_[l], e_[l]);
-      }
+      if (l + 1 < count) labelFreeComponents(levels_[l]);  // the levels the CG runs on
       if (l > 0) allocateField(levels_[l], f_[l]);  // the finest level has no right-hand side
     }
-    if (count > 1) {  // sized for the finest level, used on every cycled level
-      for (Field* field : {&previous_, &step_, &a_step_}) allocateField(levels_[0], *field);
+    if (count > 1) {  // sized for the finest level, used on every level the CG runs on
+      for (Field* field : {&r_, &z_, &p_, &ap_, &balanced_}) allocateField(levels_[0], *field);
     }
     for (size_t l = 0; l + 1 < levels_.size(); ++l) {
       Level& fine = levels_[l];
@@ -64,38 +71,26 @@ class Multigrid {
     }
   }
 
+  // FMG: the coarsest problem is smoothed to convergence; on every finer level the coarser
+  // solution, interpolated, starts a conjugate-gradient solve preconditioned by one V-cycle.
   void solve(float* values, MultigridReport* report) {
     const int coarsest = static_cast<int>(levels_.size()) - 1;
-    std::vector<double> residuals;
-    int fine_cycles = 0;
+    FineProgress progress;
     setDirichletValues(coarsest);
-    smooth(coarsest, u_[coarsest].data(), nullptr, options_.coarsest_sweeps);
+    smoothSymmetric(coarsest, u_[coarsest].data(), nullptr, options_.coarsest_sweeps);
     for (int l = coarsest - 1; l >= 0; --l) {
       setDirichletValues(l);
       prolong<false>(l, u_[l + 1].data(), u_[l].data());
-      const bool until_converged = l == 0 && options_.residual_tolerance > 0.0;
-      const bool record = l == 0 && (options_.record_residuals || until_converged);
-      const int cycles = until_converged ? options_.max_fine_cycles
-                         : l == 0        ? options_.fine_cycles
-                                         : options_.intermediate_cycles;
-      if (record) residuals.push_back(residualNorm(0));
-      for (int k = 0; k < cycles; ++k) {
-        if (until_converged && residuals.back() <= options_.residual_tolerance) break;
-        std::copy(u_[l].begin(), u_[l].end(), previous_.begin());
-        cycled_ = l;
-        vcycle(l, u_[l].data(), nullptr);
-        accelerate(l, k == 0);
-        if (l == 0) ++fine_cycles;
-        if (record) residuals.push_back(residualNorm(0));
-      }
+      conjugateGradients(l, progress);
     }
-    if (coarsest == 0 && options_.record_residuals) residuals.push_back(residualNorm(0));
+    if (coarsest == 0 && options_.record_residuals) progress.residuals.push_back(residualNorm(0));
     if (report) {
       report->levels = static_cast<int>(levels_.size());
-      report->fine_cycles = fine_cycles;
-      report->converged = options_.residual_tolerance > 0.0 && coarsest > 0 &&
-                          residuals.back() <= options_.residual_tolerance;
-      report->residuals = residuals;
+      report->fine_cycles = progress.iterations;
+      report->converged = progress.converged;
+      report->residuals = std::move(progress.residuals);
+      report->error_estimates = std::move(progress.error_estimates);
+      report->updates = std::move(progress.updates);
     }
     finestValues(values);
   }
@@ -133,6 +128,61 @@ class Multigrid {
     }
   }
 
+  static void accumulate(Sum& sum, const Px& value) {
+    for (int c = 0; c < C; ++c) sum[c] += channel(value, c);
+  }
+
+  // num / den per channel; 0 where den is not positive (a channel already solved exactly).
+  static Px ratio(const Sum& num, const Sum& den) {
+    Px out{};
+    for (int c = 0; c < C; ++c) {
+      setChannel(out, c, den[c] > 0.0 ? static_cast<float>(num[c] / den[c]) : 0.0f);
+    }
+    return out;
+  }
+  static Px ratio(const Sum& num, double den) {
+    Sum all;
+    all.fill(den);
+    return ratio(num, all);
+  }
+
+  // Root mean square over the free pixels and channels of level l, from a per-channel sum of
+  // squares.
+  double rms(int l, const Sum& squares) const {
+    double total = 0.0;
+    for (int c = 0; c < C; ++c) total += squares[c];
+    const size_t free = free_counts_[l];
+    return free ? std::sqrt(total / (static_cast<double>(free) * C)) : 0.0;
+  }
+
+  // Sums term(p) over the free pixels of level l (per row in float, then in double).
+  template <class Term>
+  Sum sumOverFree(int l, Term&& term) const {
+    const Level& level = levels_[l];
+    Sum total{};
+    for (int y = 0; y < level.height; ++y) {
+      Px row{};
+      for (int p = level.index(0, y), end = level.index(level.width, y); p < end; ++p) {
+        if (!(level.mask[p] & kFixed)) row += term(p);
+      }
+      accumulate(total, row);
+    }
+    return total;
+  }
+
+  // The largest magnitude over the free pixels and channels of a field of level l.
+  double maxOverFree(int l, const Px* __restrict v) const {
+    const Level& level = levels_[l];
+    Px largest{};
+    for (size_t i = 0; i < level.size; ++i) {
+      const Px magnitude = v[i] < 0 ? -v[i] : v[i];  // 0 at Dirichlet pixels and the border
+      largest = magnitude > largest ? magnitude : largest;
+    }
+    double result = 0.0;
+    for (int c = 0; c < C; ++c) result = std::max(result, static_cast<double>(channel(largest, c)));
+    return result;
+  }
+
   // Initialises level l for FMG: Dirichlet values, and 0 at the free pixels of the coarsest
   // level (finer levels get theirs by interpolation right after).
   void setDirichletValues(int l) {
@@ -152,165 +202,144 @@ class Multigrid {
     }
   }
 
+  // Preconditioned conjugate gradients on level l, from the interpolated start in u_[l]; the
+  // preconditioner is one V-cycle from zero on the residual, balanced (see precondition). The
+  // coarse problems are re-rasterised, not Galerkin products, so a region coupled to its Dirichlet
+  // pixels only through gaps between barriers can be coupled many times more weakly (or strongly)
+  // on a coarse grid: as a stationary iteration the V-cycle then overshoots and diverges (or
+  // stalls). As a preconditioner it stays symmetric positive definite (symmetric smoothing,
+  // restriction = transposed prolongation, SPD coarse problems), and CG removes the few
+  // badly scaled error components those regions add in about as many iterations.
+  void conjugateGradients(int l, FineProgress& progress) {
+    const bool finest = l == 0;
+    const bool until_converged = finest && options_.tolerance > 0.0;
+    const bool record = finest && (options_.record_residuals || until_converged);
+    const int iterations = until_converged ? options_.max_fine_cycles
+                           : finest        ? options_.fine_cycles
+                                           : options_.intermediate_cycles;
+    const Level& level = levels_[l];
+    Px* __restrict u = u_[l].data();
+    Px* __restrict r = r_.data();
+    Px* __restrict z = z_.data();
+    Px* __restrict p = p_.data();
+    Px* __restrict ap = ap_.data();
+    // Over the whole layout: the buffers are sized for the finest level, and this level's
+    // ghost border and Dirichlet pixels must read 0 in r, z and p.
+    for (size_t i = 0; i < level.size; ++i) r[i] = residualAt(level, u, nullptr, i);
+    if (record) progress.residuals.push_back(residualNorm(l, r));
+    Sum rz_previous{};
+    for (int k = 0; k < iterations; ++k) {
+      precondition(l, r, z);
+      const Sum rz = sumOverFree(l, [&](int i) { return r[i] * z[i]; });
+      if (record) {
+        // z = B r approximates the error of u (exactly if the V-cycle inverted A).
+        const double estimate = maxOverFree(l, z);
+        progress.error_estimates.push_back(estimate);
+        if (until_converged && estimate <= options_.tolerance) {
+          progress.converged = true;
+          break;
+        }
+      }
+      const Px beta = k == 0 ? Px{} : ratio(rz, rz_previous);
+      rz_previous = rz;
+      // p stays 0 where z is (Dirichlet pixels, ghost border); at k = 0 p_ holds another
+      // level's layout.
+      if (k == 0) {
+        std::copy_n(z, level.size, p);
+      } else {
+        for (size_t i = 0; i < level.size; ++i) p[i] = z[i] + beta * p[i];
+      }
+      const Sum pap = sumOverFree(l, [&](int i) {
+        ap[i] = -residualAt(level, p, nullptr, i);  // A p (p is 0 at Dirichlet pixels)
+        return p[i] * ap[i];
+      });
+      const Px alpha = ratio(rz, pap);
+      Sum update_squares{};
+      const Sum rr = sumOverFree(l, [&](int i) {
+        const Px step = alpha * p[i];
+        u[i] += step;
+        r[i] -= alpha * ap[i];
+        accumulate(update_squares, step * step);
+        return r[i] * r[i];
+      });
+      if (finest) ++progress.iterations;
+      if (record) {
+        progress.residuals.push_back(rms(l, rr));
+        progress.updates.push_back(rms(l, update_squares));
+      }
+    }
+  }
+
+  // z = (I - Q A) B (I - A Q) r + Q r: the V-cycle B balanced by the coarse space of the free
+  // components' constants (Mandel's balancing; Nicolaides' deflation), Q = W (W^T A W)^-1 W^T
+  // with W the components' indicator vectors. A region that reaches its Dirichlet pixels only
+  // through a few gaps is nearly singular: its constant mode is pinned by those few links and
+  // every coarse grid pins it differently, so the V-cycle corrects it by a wrong factor; Q
+  // corrects it exactly. Components are not linked, so W^T A W is diagonal, and as A's
+  // internal links cancel in a component's sum, W^T A v is the sum of pin links * v over the
+  // pinned pixels. Symmetric positive definite whenever B is.
+  void precondition(int l, const Px* __restrict r, Px* __restrict z) {
+    const Level& level = levels_[l];
+    const size_t components = static_cast<size_t>(level.component_count);
+    Px* __restrict balanced = balanced_.data();
+    pins_.assign(components, 0.0);
+    sums_.assign(components, Sum{});
+    for (const Level::Pinned& pin : level.pinned) pins_[level.component[pin.pixel]] += pin.links;
+    for (size_t i = 0; i < level.size; ++i) {
+      if (level.component[i] >= 0) accumulate(sums_[level.component[i]], r[i]);
+    }
+    constant_.resize(components);  // Q r per component
+    for (size_t k = 0; k < components; ++k) constant_[k] = ratio(sums_[k], pins_[k]);
+    std::copy_n(r, level.size, balanced);
+    for (const Level::Pinned& pin : level.pinned) {
+      balanced[pin.pixel] -= pin.links * constant_[level.component[pin.pixel]];  // - A Q r
+    }
+    std::fill_n(z, level.size, Px{});
+    vcycle(l, z, balanced);
+    sums_.assign(components, Sum{});
+    for (const Level::Pinned& pin : level.pinned) {
+      accumulate(sums_[level.component[pin.pixel]], pin.links * z[pin.pixel]);  // W^T A z
+    }
+    for (size_t k = 0; k < components; ++k) constant_[k] -= ratio(sums_[k], pins_[k]);
+    for (size_t i = 0; i < level.size; ++i) {
+      if (level.component[i] >= 0) z[i] += constant_[level.component[i]];
+    }
+  }
+
   void vcycle(int l, Px* u, const Px* f) {
     const int coarsest = static_cast<int>(levels_.size()) - 1;
     if (l == coarsest) {
-      smooth(l, u, f, options_.coarsest_sweeps);
+      smoothSymmetric(l, u, f, options_.coarsest_sweeps);
       return;
     }
-    smooth(l, u, f, options_.pre_smoothing);
+    smooth(l, u, f, options_.pre_smoothing, false);
     restrictResidual(l, u, f, f_[l + 1].data());
     std::fill(u_[l + 1].begin(), u_[l + 1].end(), Px{});
     vcycle(l + 1, u_[l + 1].data(), f_[l + 1].data());
-    applyCorrection(l, u, f);
-    smooth(l, u, f, options_.post_smoothing);
+    prolong<true>(l, u_[l + 1].data(), u);
+    smooth(l, u, f, options_.post_smoothing, true);  // the adjoint of the pre-smoothing
   }
 
-  // Replaces the update d = u - u_previous of the V-cycle just done on level l by the
-  // combination a d + b s with the previous step s, per free component and channel (a
-  // flexible-CG-like two-term recurrence). A region coupled to its Dirichlet pixels only
-  // through gaps between barriers has a nearly singular Laplacian whose smooth error no
-  // re-rasterised coarse grid represents well: the V-cycle alone removes only a few per cent
-  // of it a cycle. (a, b) minimises the energy norm of the error; should that combination
-  // leave a larger residual than the one before the cycle, the (a, b) that minimises the
-  // residual is taken instead, so the residual never grows (a = b = 0 is a candidate).
-  void accelerate(int l, bool first) {
-    const Level& level = levels_[l];
-    Px* __restrict u = u_[l].data();
-    Px* __restrict d = previous_.data();  // holds u before the cycle; becomes the update
-    Px* __restrict step = step_.data();
-    Px* __restrict a_step = a_step_.data();
-    // Over the whole layout: the buffers are sized for the finest level, and the ghost border
-    // of this level must read 0.
-    for (size_t p = 0; p < level.size; ++p) d[p] = level.component[p] >= 0 ? u[p] - d[p] : Px{};
-    const size_t components = static_cast<size_t>(level.component_count);
-    sums_.assign(components, {});
-    for (int y = 0; y < level.height; ++y) {
-      for (int x = 0; x < level.width; ++x) {
-        const int p = level.index(x, y);
-        const int k = level.component[p];
-        if (k < 0) continue;
-        const Px ad = -residualAt(level, d, nullptr, p);  // A d (d is 0 at Dirichlet pixels)
-        const Px r = residualAt(level, u, nullptr, p);    // after the cycle: r0 - A d
-        Sums& sum = sums_[k];
-        accumulate(sum.d_ad, d[p] * ad);
-        accumulate(sum.r_d, r * d[p]);
-        accumulate(sum.ad_ad, ad * ad);
-        accumulate(sum.r_ad, r * ad);
-        accumulate(sum.r_r, r * r);
-        if (first) continue;
-        accumulate(sum.s_ad, step[p] * ad);
-        accumulate(sum.s_as, step[p] * a_step[p]);
-        accumulate(sum.r_s, r * step[p]);
-        accumulate(sum.as_ad, a_step[p] * ad);
-        accumulate(sum.as_as, a_step[p] * a_step[p]);
-        accumulate(sum.r_as, r * a_step[p]);
-      }
-    }
-    factors_.resize(components);
-    step_factors_.resize(components);
-    for (size_t k = 0; k < components; ++k) {
-      const Sums& sum = sums_[k];
-      for (int c = 0; c < C; ++c) {
-        // With r0 = r + A d: energy minimum  [dAd sAd; sAd sAs] (a, b) = (r0.d, r0.s),
-        // residual minimum [Ad.Ad Ad.As; Ad.As As.As] (a, b) = (r0.Ad, r0.As).
-        const auto solve2 = [first](double m11, double m12, double m22, double v1, double v2) {
-          const double det = m11 * m22 - m12 * m12;
-          if (!first && m11 > 0.0 && det > 1e-12 * m11 * m22) {
-            return std::pair{(v1 * m22 - v2 * m12) / det, (m11 * v2 - m12 * v1) / det};
-          }
-          return std::pair{m11 > 0.0 ? v1 / m11 : 0.0, 0.0};
-        };
-        const double ad_ad = sum.ad_ad[c], as_ad = sum.as_ad[c], as_as = sum.as_as[c];
-        const double r0_ad = sum.r_ad[c] + ad_ad, r0_as = sum.r_as[c] + as_ad;
-        const double r0_r0 = sum.r_r[c] + 2.0 * sum.r_ad[c] + ad_ad;
-        auto [a, b] = solve2(sum.d_ad[c], sum.s_ad[c], sum.s_as[c], sum.r_d[c] + sum.d_ad[c],
-                             sum.r_s[c] + sum.s_ad[c]);
-        // |r0 - a Ad - b As|^2
-        const double residual = r0_r0 - 2.0 * (a * r0_ad + b * r0_as) + a * a * ad_ad +
-                                2.0 * a * b * as_ad + b * b * as_as;
-        if (!(residual <= r0_r0)) std::tie(a, b) = solve2(ad_ad, as_ad, as_as, r0_ad, r0_as);
-        setChannel(factors_[k], c, static_cast<float>(a));
-        setChannel(step_factors_[k], c, static_cast<float>(b));
-      }
-    }
-    for (int y = 0; y < level.height; ++y) {
-      for (int x = 0; x < level.width; ++x) {
-        const int p = level.index(x, y);
-        const int k = level.component[p];
-        if (k < 0) continue;
-        const Px ad = -residualAt(level, d, nullptr, p);
-        const Px a = factors_[k];
-        Px x_new = a * d[p], ax_new = a * ad;
-        if (!first) {
-          x_new += step_factors_[k] * step[p];
-          ax_new += step_factors_[k] * a_step[p];
-        }
-        u[p] += x_new - d[p];
-        step[p] = x_new;
-        a_step[p] = ax_new;
-      }
-    }
+  // Sweeps alternating red-black and black-red order: an even count is a symmetric operator.
+  void smoothSymmetric(int l, Px* u, const Px* f, int sweeps) const {
+    for (int sweep = 0; sweep < sweeps; ++sweep) smooth(l, u, f, 1, sweep % 2 == 1);
   }
 
-  // Adds the interpolated coarse correction e to u. Below the level being cycled (inside the
-  // recursion) it is scaled, per free component and channel, by the factor that minimises
-  // the energy norm of that component's error: alpha = <r, e> / <e, A e>, r the residual
-  // before the correction. The coarse problems are re-rasterised, not Galerkin products, so a
-  // region coupled to its Dirichlet pixels only weakly (through gaps at barrier ends, say)
-  // can be coupled much more weakly still on the coarse grid: its correction then overshoots
-  // many times over and the plain V-cycle diverges. With the factor no correction increases
-  // the energy of the error. On the cycled level itself accelerate() chooses the step.
-  void applyCorrection(int l, Px* __restrict u, const Px* __restrict f) {
-    if (l == cycled_) {
-      prolong<true>(l, u_[l + 1].data(), u);
-      return;
-    }
+  // Red-black Gauss-Seidel on the free pixels: u_p = (f_p + sum w u_q) / sum w, red pixels
+  // (x + y even) first, or black first if `black_first`. The second half-sweep trails the
+  // first by a row, so one pass over memory does a full sweep.
+  void smooth(int l, Px* u, const Px* f, int sweeps, bool black_first) const {
     const Level& level = levels_[l];
-    Px* __restrict e = e_[l].data();
-    std::fill(e_[l].begin(), e_[l].end(), Px{});
-    prolong<true>(l, u_[l + 1].data(), e);
-    const size_t components = static_cast<size_t>(level.component_count);
-    numerators_.assign(components, Sum{});
-    denominators_.assign(components, Sum{});
-    for (int y = 0; y < level.height; ++y) {
-      for (int x = 0; x < level.width; ++x) {
-        const int p = level.index(x, y);
-        const int k = level.component[p];
-        if (k < 0) continue;
-        // -residualAt(e) is A e at a free pixel (e is 0 at Dirichlet pixels).
-        accumulate(numerators_[k], residualAt(level, u, f, p) * e[p]);
-        accumulate(denominators_[k], -residualAt(level, e, nullptr, p) * e[p]);
-      }
-    }
-    factors_.resize(components);
-    for (size_t k = 0; k < components; ++k) {
-      for (int c = 0; c < C; ++c) {
-        const double den = denominators_[k][c];
-        setChannel(factors_[k], c, den > 0.0 ? static_cast<float>(numerators_[k][c] / den) : 0.0f);
-      }
-    }
-    for (int y = 0; y < level.height; ++y) {
-      for (int x = 0; x < level.width; ++x) {
-        const int p = level.index(x, y);
-        const int k = level.component[p];
-        if (k >= 0) u[p] += factors_[k] * e[p];
-      }
-    }
-  }
-
-  // Red-black Gauss-Seidel on the free pixels: u_p = (f_p + sum w u_q) / sum w. The black
-  // half-sweep trails the red one by a row, so one pass over memory does a full sweep.
-  void smooth(int l, Px* u, const Px* f, int sweeps) const {
-    const Level& level = levels_[l];
+    const int order = black_first ? 1 : 0;
     for (int sweep = 0; sweep < sweeps; ++sweep) {
       for (int y = 0; y <= level.height; ++y) {
+        const int first_x = (y + order) & 1;  // leading row y, trailing row y - 1: other colour
         if (f) {
-          if (y < level.height) relaxRow<true>(level, u, f, y, y & 1);
-          if (y > 0) relaxRow<true>(level, u, f, y - 1, y & 1);
+          if (y < level.height) relaxRow<true>(level, u, f, y, first_x);
+          if (y > 0) relaxRow<true>(level, u, f, y - 1, first_x);
         } else {
-          if (y < level.height) relaxRow<false>(level, u, f, y, y & 1);
-          if (y > 0) relaxRow<false>(level, u, f, y - 1, y & 1);
+          if (y < level.height) relaxRow<false>(level, u, f, y, first_x);
+          if (y > 0) relaxRow<false>(level, u, f, y - 1, first_x);
         }
       }
     }
@@ -338,8 +367,9 @@ class Multigrid {
   }
 
   // The residual f - A u at pixel p: 0 at Dirichlet pixels and in the ghost border.
-  static Px residualAt(const Level& level, const Px* __restrict u, const Px* __restrict f, int p) {
-    const int s = level.stride;
+  static Px residualAt(const Level& level, const Px* __restrict u, const Px* __restrict f,
+                       size_t p) {
+    const size_t s = static_cast<size_t>(level.stride);
     const std::uint8_t m = level.mask[p];
     Px r;
     if (m == kAllLinks) {
@@ -354,46 +384,43 @@ class Multigrid {
     return f ? r + f[p] : r;
   }
 
-  double residualNorm(int l) const {
+  // RMS of a residual field of level l (0 at Dirichlet pixels) or, without one, of u's.
+  double residualNorm(int l, const Px* r = nullptr) const {
     const Level& level = levels_[l];
-    size_t free = 0;
-    double squares = 0.0;
-    for (int y = 0; y < level.height; ++y) {
-      for (int x = 0; x < level.width; ++x) {
-        const int p = level.index(x, y);
-        free += !(level.mask[p] & kFixed);
-        const Px r = residualAt(level, u_[l].data(), nullptr, p);
-        for (int c = 0; c < C; ++c) {
-          const double value = channel(r, c);
-          squares += value * value;
-        }
-      }
-    }
-    return free ? std::sqrt(squares / (static_cast<double>(free) * C)) : 0.0;
+    const Px* u = u_[l].data();
+    return rms(l, sumOverFree(l, [&](int i) {
+                 const Px value = r ? r[i] : residualAt(level, u, nullptr, i);
+                 return value * value;
+               }));
   }
 
-  // Computes the residual of level l and restricts it to level l + 1 in one pass. The
-  // unscaled coarse Laplacian is 4x the fine one, so the coarse right-hand side is the sum
-  // (not the mean) of the four children's residuals; a grid side of 1 pixel is not coarsened
-  // and contributes no child, so its factor 2 is applied explicitly. Children beyond an odd
-  // border fall into the ghost border, whose residual is 0. Residuals of free pixels in
-  // Dirichlet coarse cells are redirected (see prolongationSources).
+  // Restricts the residual of level l to level l + 1 with the transpose of the correction
+  // prolongation (same sources, same weights), which keeps the V-cycle symmetric: each fine
+  // pixel sends its residual to the coarse cells its correction comes from, so a free pixel
+  // in a Dirichlet coarse cell sends it to the free neighbours instead of losing it (next to
+  // a curve that residual carries the smooth error of a whole region). The unscaled coarse
+  // Laplacian matches this transpose's weights (4 per coarse cell); a grid side of 1 pixel
+  // is not coarsened and gives half of them, so its factor 2 is applied explicitly.
   void restrictResidual(int l, const Px* __restrict u, const Px* __restrict f,
                         Px* __restrict fc) const {
     const Level& fine = levels_[l];
     const Level& coarse = levels_[l + 1];
-    const int s = fine.stride;
     const float scale = (fine.width == 1 ? 2.0f : 1.0f) * (fine.height == 1 ? 2.0f : 1.0f);
-    for (int y = 0; y < coarse.height; ++y) {
-      for (int x = 0; x < coarse.width; ++x) {
-        const int p = fine.index(2 * x, 2 * y);
-        fc[coarse.index(x, y)] =
-            scale * (residualAt(fine, u, f, p) + residualAt(fine, u, f, p + 1) +
-                     residualAt(fine, u, f, p + s) + residualAt(fine, u, f, p + s + 1));
+    std::fill_n(fc, coarse.size, Px{});
+    for (int y = 0; y < fine.height; ++y) {
+      const int cy = fine.coarse_y[y], ny = fine.coarse_y_neighbour[y];
+      const int p0 = fine.index(0, y);
+      for (int x = 0; x < fine.width; ++x) {
+        const std::uint8_t sources = fine.correction_sources[p0 + x];
+        if (sources == kNoSources) continue;
+        const int cx = fine.coarse_x[x], nx = fine.coarse_x_neighbour[x];
+        const ProlongationWeights& w = kProlongation[sources];
+        const Px r = scale * residualAt(fine, u, f, static_cast<size_t>(p0 + x));
+        fc[coarse.index(cx, cy)] += w.near * r;
+        fc[coarse.index(nx, cy)] += w.x * r;
+        fc[coarse.index(cx, ny)] += w.y * r;
+        fc[coarse.index(nx, ny)] += w.xy * r;
       }
-    }
-    for (const Level::Redirect& redirect : fine.residual_redirects) {
-      fc[redirect.coarse] += scale * redirect.weight * residualAt(fine, u, f, redirect.fine);
     }
   }
 
@@ -440,22 +467,13 @@ class Multigrid {
   const std::vector<GridProblem>* problems_ = nullptr;
   MultigridOptions options_;
   std::vector<Level> levels_;
-  std::vector<Field> u_, f_;
-  std::vector<Field> e_;  // correction scratch per level
-  // Dot products per free component, in double: a component can have 10^5 pixels.
-  using Sum = std::array<double, C>;
-  static void accumulate(Sum& sum, const Px& value) {
-    for (int c = 0; c < C; ++c) sum[c] += channel(value, c);
-  }
-  int cycled_ = 0;
-  std::vector<Sum> numerators_, denominators_;  // per free component (applyCorrection)
-  std::vector<Px> factors_;
-  struct Sums {  // accelerate's dot products (r is the residual after the cycle)
-    Sum d_ad{}, r_d{}, ad_ad{}, r_ad{}, r_r{}, s_ad{}, s_as{}, r_s{}, as_ad{}, as_as{}, r_as{};
-  };
-  Field previous_, step_, a_step_;  // accelerate: finest cycled level's update, step, A step
-  std::vector<Sums> sums_;
-  std::vector<Px> step_factors_;
+  std::vector<size_t> free_counts_;
+  std::vector<Field> u_, f_;  // per level: solution (FMG) or correction (V-cycle), rhs
+  Field r_, z_, p_, ap_;      // CG: residual, preconditioned residual, direction, A direction
+  Field balanced_;            // precondition: the residual with the components' constants removed
+  std::vector<double> pins_;  // precondition, per component: W^T A W
+  std::vector<Sum> sums_;
+  std::vector<Px> constant_;
 };
 
 }  // namespace

@@ -5,7 +5,7 @@
 namespace vicc_glyphs::multigrid_detail {
 namespace {
 
-// The sources of the free fine pixel p = (x, y), and its residual redirects.
+// The sources of the free fine pixel p = (x, y).
 void pixelSources(Level& fine, const Level& coarse, int x, int y) {
   const int p = fine.index(x, y);
   const std::uint8_t m = fine.mask[p];
@@ -36,11 +36,6 @@ void pixelSources(Level& fine, const Level& coarse, int x, int y) {
   const int correction = (use_x && free(b)) | (use_y && free(d)) << 1 | (use_xy && free(e)) << 2 |
                          near_correction << 3;
   fine.correction_sources[p] = correction ? static_cast<std::uint8_t>(correction) : kNoSources;
-  if (near_correction || !correction) return;
-  const ProlongationWeights& w = kProlongation[correction];
-  for (const auto& [cell, weight] : {std::pair{b, w.x}, {d, w.y}, {e, w.xy}}) {
-    if (weight > 0.0f) fine.residual_redirects.push_back({p, cell, weight});
-  }
 }
 }  // namespace
 
@@ -70,6 +65,7 @@ void makeLevel(const GridProblem& problem, Level& level) {
 void labelFreeComponents(Level& level) {
   level.component.assign(level.size, -1);
   level.component_count = 0;
+  level.pinned.clear();
   std::vector<int> stack;
   const int s = level.stride;
   for (int y = 0; y < level.height; ++y) {
@@ -83,13 +79,20 @@ void labelFreeComponents(Level& level) {
         const int p = stack.back();
         stack.pop_back();
         const std::uint8_t m = level.mask[p];
+        int pins = 0;
         for (const auto& [link, q] :
              {std::pair{kLeft, p - 1}, {kRight, p + 1}, {kUp, p - s}, {kDown, p + s}}) {
+          if (!(m & link)) continue;
           // A link to a Dirichlet pixel does not join components (it is a constant there).
-          if (!(m & link) || (level.mask[q] & kFixed) || level.component[q] >= 0) continue;
+          if (level.mask[q] & kFixed) {
+            ++pins;
+            continue;
+          }
+          if (level.component[q] >= 0) continue;
           level.component[q] = label;
           stack.push_back(q);
         }
+        if (pins) level.pinned.push_back({p, static_cast<float>(pins)});
       }
     }
   }
@@ -112,7 +115,6 @@ void prolongationSources(Level& fine, const Level& coarse) {
     fine.solution_sources[p] = fine.mask[p] & kFixed ? kNoSources : kAllSources;
   }
   fine.correction_sources = fine.solution_sources;
-  fine.residual_redirects.clear();
   fine.pending.assign(fine.size, 0);
   std::vector<int>& irregular = fine.irregular;
   irregular.clear();

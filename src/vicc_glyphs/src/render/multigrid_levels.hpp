@@ -76,18 +76,17 @@ struct Level {
   // and a correction (V-cycle); see prolongationSources.
   render_detail::PixelVector<std::uint8_t> solution_sources;
   render_detail::PixelVector<std::uint8_t> correction_sources;
-  // Free pixels whose coarse cell is a Dirichlet cell send their residual to these free
-  // coarse cells instead (see prolongationSources).
-  struct Redirect {
-    int fine;
-    int coarse;
-    float weight;
-  };
-  std::vector<Redirect> residual_redirects;
   // Per pixel: the connected component of free pixels (over links) it belongs to, -1 at
   // Dirichlet pixels and in the ghost border; see labelFreeComponents.
   std::vector<int> component;
   int component_count = 0;
+  // The free pixels linked to Dirichlet pixels and how many such links each has: all that
+  // ties a component's values down (A = graph Laplacian + this diagonal).
+  struct Pinned {
+    int pixel;
+    float links;
+  };
+  std::vector<Pinned> pinned;
   render_detail::PixelVector<std::uint8_t> pending;  // scratch of prolongationSources
   std::vector<int> irregular;                        // ditto
 
@@ -97,9 +96,9 @@ struct Level {
 /// Converts `problem` into `level` (reusing its memory).
 void makeLevel(const GridProblem& problem, Level& level);
 
-/// Labels the connected components of the free pixels of `level` (level.component). The
-/// Laplacian restricted to the free pixels is block-diagonal over these components, so the
-/// V-cycle can scale its coarse-grid correction on each one separately (see multigrid.cpp).
+/// Labels the connected components of the free pixels of `level` (level.component) and
+/// lists its pinned pixels. The Laplacian restricted to the free pixels is block-diagonal over
+/// the components; the solver deflates each one's constant (see multigrid.cpp).
 void labelFreeComponents(Level& level);
 
 /// Cell-centred bilinear interpolation: fine cell i lies a quarter cell from coarse cell i/2
@@ -111,9 +110,7 @@ void prolongationTable(int fine, int coarse, std::vector<int>& near, std::vector
 // own coarse cell are intact, so values do not leak across a curve (plain bilinear weights
 // mix the two sides' colours into every pixel near a curve). A correction is moreover never
 // taken from a coarse Dirichlet cell: its correction is 0 only because that cell is fixed on
-// the coarse grid. Likewise the restriction must not drop the residual of free fine pixels
-// whose coarse cell is fixed: next to a curve that residual is what carries the smooth error
-// of a whole region to the coarse grid, so it is redirected to the free correction sources.
+// the coarse grid. The restriction is the transpose of the correction prolongation.
 // Away from curves and borders all four sources are usable; only the pixels near a fine or
 // coarse pixel that is not fully linked are worked out one by one.
 void prolongationSources(Level& fine, const Level& coarse);

@@ -90,6 +90,10 @@ cv::Mat GlyphServer::renderCached(const DesignEntry& entry, const std::vector<in
   options.background = entry.design.background;
   RenderResult result;
   renderer_.render(image, options, result);
+  if (!result.report.multigrid.converged) {
+    ROS_WARN("glyph_server: design '%s': the diffusion did not reach its error tolerance %g",
+             entry.design.name.c_str(), options.multigrid.tolerance);
+  }
   cv::Mat rgb8 = toRgb8(result.image);
   cache_[key] = rgb8;
   cache_order_.push_back(key);

@@ -20,8 +20,10 @@ const std::vector<OptionSpec>& renderOptions() {
       {"out", "OUT.png", "PNG to write (required)"},
       {"size", "N", "output width in pixels (default: the input's own width)"},
       {"dci", "OUT.xml", "also write the loaded (and scaled) DCI as Orzan XML"},
-      {"cycles", "N", "multigrid V-cycles on the finest grid (default 2)"},
-      {"tolerance", "R", "V-cycle until the rms residual is at most R (at most 50 cycles)"},
+      {"tolerance", "E",
+       "iterate until the estimated largest colour error (0..1) is at most E (default "
+       "0.002, at most 50 iterations)"},
+      {"cycles", "N", "instead: exactly N iterations (V-cycles) on the finest grid"},
       {"color", "RRGGBB", "SVG: the colour of currentColor (default 000000, black)"},
       {"lenient", "", "SVG: unsupported features become warnings and are left out"},
       {"report", "", "print timings, multigrid levels and residuals"},
@@ -32,7 +34,7 @@ const std::vector<OptionSpec>& renderOptions() {
 
 void printUsage(std::ostream& out) {
   out << "usage: vicc_glyph render INPUT.(svg|xml|png) --out OUT.png [--size N] [--dci OUT.xml]\n"
-         "                        [--cycles N] [--tolerance R]\n"
+         "                        [--tolerance E | --cycles N]\n"
          "                        [--color RRGGBB] [--lenient] [--report]\n\n"
          "Renders a diffusion curve image (Orzan XML), an SVG icon or a PNG (traced) to PNG.\n\n"
       << formatOptions(renderOptions());
@@ -46,13 +48,15 @@ void printReport(const RenderResult& result, std::ostream& out) {
       << "time ms: total " << t.total_ms << ", assemble " << t.assemble_ms << ", solve "
       << t.solve_ms << ", antialias " << t.antialias_ms << ", blur " << t.blur_ms << "\n"
       << "multigrid: " << report.multigrid.levels << " levels, " << report.multigrid.fine_cycles
-      << " V-cycles on the finest grid"
-      << (report.multigrid.converged ? " (residual tolerance reached)" : "") << "\n"
+      << " CG iterations (V-cycles) on the finest grid"
+      << (report.multigrid.converged ? " (error tolerance reached)" : "") << "\n"
       << std::scientific << std::setprecision(3);
-  const std::vector<double>& residuals = report.multigrid.residuals;
-  for (size_t k = 0; k < residuals.size(); ++k) {
-    out << "  rms residual " << (k == 0 ? "after FMG  " : "after cycle " + std::to_string(k))
-        << ": " << residuals[k] << "\n";
+  const MultigridReport& m = report.multigrid;
+  for (size_t k = 0; k < m.residuals.size(); ++k) {
+    out << "  " << (k == 0 ? "FMG start  " : "iteration " + std::to_string(k)) << ": rms residual "
+        << m.residuals[k];
+    if (k < m.error_estimates.size()) out << ", estimated max error " << m.error_estimates[k];
+    out << "\n";
   }
   out << std::defaultfloat;
 }
@@ -94,8 +98,12 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
     output = parsed.value("out");
     if (output.empty()) throw UsageError("missing --out OUT.png");
     if (parsed.has("size")) size = parseInteger("size", parsed.value("size"), 1, kMaxSize);
+    if (parsed.has("cycles") && parsed.has("tolerance")) {
+      throw UsageError("--cycles and --tolerance exclude each other");
+    }
     if (parsed.has("cycles")) {
       options.multigrid.fine_cycles = parseInteger("cycles", parsed.value("cycles"), 0, 100);
+      options.multigrid.tolerance = 0.0;
     }
     if (parsed.has("tolerance")) {
       const std::string text = parsed.value("tolerance");
@@ -104,7 +112,7 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
       if (text.empty() || *end != '\0' || !(tolerance > 0.0) || !std::isfinite(tolerance)) {
         throw UsageError("--tolerance needs a positive number, got '" + text + "'");
       }
-      options.multigrid.residual_tolerance = tolerance;
+      options.multigrid.tolerance = tolerance;
     }
     if (parsed.has("color")) svg.current_color = parseHexColor(parsed.value("color"));
     svg.lenient = parsed.has("lenient");
@@ -123,6 +131,11 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
     RenderResult result;
     DiffusionCurveRenderer().render(image, options, result);
     writePng(result.image, output);
+    const MultigridOptions& solver = options.multigrid;
+    if (solver.tolerance > 0.0 && !result.report.multigrid.converged) {
+      err << "vicc_glyph render: warning: the diffusion did not reach the error tolerance "
+          << solver.tolerance << " in " << solver.max_fine_cycles << " iterations\n";
+    }
     if (report) printReport(result, out);
   } catch (const std::exception& e) {
     err << "vicc_glyph render: " << e.what() << "\n";

@@ -14,27 +14,24 @@ namespace vicc_glyphs {
 namespace {
 
 struct Solve {
-  std::vector<double> residuals;
+  MultigridReport report;
   double mae = 0.0;
 };
 
-Solve solveAndCompare(const DiffusionCurveImage& image, int cycles) {
+// With the default options (the error tolerance) unless `iterations` fixes the count.
+Solve solveAndCompare(const DiffusionCurveImage& image, int iterations = -1) {
   MultigridOptions options;
-  options.fine_cycles = cycles;
-  options.record_residuals = true;
+  if (iterations >= 0) {
+    options.tolerance = 0.0;
+    options.fine_cycles = iterations;
+    options.record_residuals = true;
+  }
   const std::vector<GridProblem> levels =
       assembleColorLevels(image, Color::Zero(), options.coarsest_size);
-  MultigridReport report;
-  const std::vector<float> values = solveMultigrid(levels, options, &report);
-  return {report.residuals, meanAbsoluteError(values, solveDirect(levels.front()))};
-}
-
-void expectFallingEveryCycle(const std::vector<double>& r) {
-  ASSERT_GE(r.size(), 2u);
-  for (size_t k = 1; k < r.size(); ++k) {
-    EXPECT_TRUE(std::isfinite(r[k])) << "cycle " << k;
-    EXPECT_LT(r[k], r[k - 1]) << "cycle " << k;
-  }
+  Solve solve;
+  const std::vector<float> values = solveMultigrid(levels, options, &solve.report);
+  solve.mae = meanAbsoluteError(values, solveDirect(levels.front()));
+  return solve;
 }
 
 DiffusionCurve barrierSegment(const Point2& from, const Point2& to) {
@@ -85,29 +82,28 @@ DiffusionCurveImage leakyBarrierImage(int size) {
   return image;
 }
 
-// Before the fix the residual grew about 2.4x per cycle here. The region outside the ring is
-// so weakly coupled that the solve still stalls short of the direct solution (about 6.5e-4
-// rms); this only asserts that it no longer diverges.
-TEST(BarrierConvergenceTest, LeakyBarriersDoNotDiverge) {
-  const Solve solve = solveAndCompare(leakyBarrierImage(128), 12);
-  ASSERT_EQ(solve.residuals.size(), 13u);
-  for (size_t k = 1; k < solve.residuals.size(); ++k) {
-    EXPECT_TRUE(std::isfinite(solve.residuals[k])) << "cycle " << k;
-    EXPECT_LE(solve.residuals[k], solve.residuals[k - 1]) << "cycle " << k;
-  }
-  EXPECT_LT(solve.residuals.back(), 0.05 * solve.residuals.front());
+// A plain V-cycle iteration grew the residual about 2.4x per cycle here; with per-component
+// scaled corrections it stalled at about 6.5e-4 rms short of the direct solution. The
+// preconditioned CG converges to it.
+TEST(BarrierConvergenceTest, LeakyBarriersConvergeToTheDirectSolve) {
+  const Solve solve = solveAndCompare(leakyBarrierImage(128));
+  EXPECT_TRUE(solve.report.converged);
+  EXPECT_LE(solve.report.error_estimates.back(), MultigridOptions::kDefaultTolerance);
+  EXPECT_LE(solve.mae, 1e-3);
+  const Solve twice = solveAndCompare(leakyBarrierImage(128), 2 * solve.report.fine_cycles);
+  EXPECT_LE(twice.mae, 0.1 * solve.mae + 1e-6);  // still converging, not stalled
 }
 
 // The vendored ladybug (Orzan et al., as a small-usvg SceneXML): most of its area is enclosed
-// by barrier sides and reaches colour only through gaps. Before the fix the V-cycle
-// overshot there on the coarse levels and the residual grew about 8x per cycle.
-TEST(BarrierConvergenceTest, LadybugSampleConvergesEveryCycle) {
+// by barrier sides and reaches colour only through gaps. A plain V-cycle overshot there on
+// the coarse levels and the residual grew about 8x per cycle.
+TEST(BarrierConvergenceTest, LadybugSampleConvergesToTheDirectSolve) {
   const DiffusionCurveImage image =
       loadDiffusionCurves(std::string(VICC_GLYPHS_DATA_DIR) + "/samples/ladybug_usvg.xml", 128);
-  const Solve solve = solveAndCompare(image, 16);
-  expectFallingEveryCycle(solve.residuals);
-  EXPECT_LT(solve.residuals.back(), 0.05 * solve.residuals.front());
-  EXPECT_LE(solve.mae, 0.005);
+  const Solve solve = solveAndCompare(image);
+  EXPECT_TRUE(solve.report.converged);
+  EXPECT_LE(solve.mae, 0.002);
+  for (const double r : solve.report.residuals) EXPECT_TRUE(std::isfinite(r));
 }
 
 }  // namespace

@@ -27,9 +27,10 @@ Comparison compareWithDirect(const DiffusionCurveImage& image, const MultigridOp
 class MultigridVersusDirectTest
     : public ::testing::TestWithParam<std::pair<std::string, DiffusionCurveImage>> {};
 
-TEST_P(MultigridVersusDirectTest, DefaultCyclesMatchTheDirectSolve) {
+TEST_P(MultigridVersusDirectTest, DefaultToleranceMatchesTheDirectSolve) {
   const Comparison result = compareWithDirect(GetParam().second, MultigridOptions{});
-  EXPECT_LE(result.mae, 0.005) << GetParam().first;
+  EXPECT_TRUE(result.report.converged) << GetParam().first;
+  EXPECT_LE(result.mae, 0.001) << GetParam().first;
   EXPECT_GT(result.report.levels, 4);
 }
 
@@ -38,6 +39,7 @@ TEST_P(MultigridVersusDirectTest, WithoutCoarseLevelsSmoothingAloneIsFarOff) {
   MultigridOptions options;
   options.coarsest_size = 100000;
   options.coarsest_sweeps = 12;
+  options.tolerance = 0.0;
   EXPECT_GT(compareWithDirect(GetParam().second, options).mae, 0.01) << GetParam().first;
 }
 
@@ -51,48 +53,61 @@ INSTANTIATE_TEST_SUITE_P(
                       std::pair{std::string("icon_like"), iconLikeImage(256, 256)}),
     [](const auto& info) { return info.param.first; });
 
-std::vector<double> residualHistory(const DiffusionCurveImage& image, int cycles) {
+MultigridReport fixedIterations(const DiffusionCurveImage& image, int iterations) {
   MultigridOptions options;
-  options.fine_cycles = cycles;
+  options.tolerance = 0.0;
+  options.fine_cycles = iterations;
   options.record_residuals = true;
   MultigridReport report;
   solveMultigrid(assembleColorLevels(image, Color::Zero(), options.coarsest_size), options,
                  &report);
-  return report.residuals;
+  return report;
 }
 
-TEST(MultigridTest, ResidualToleranceStopsTheCyclesAndIsReported) {
+TEST(MultigridTest, ErrorToleranceStopsTheIterationsAndIsReported) {
   MultigridOptions options;
-  options.residual_tolerance = 1e-6;
+  options.tolerance = 1e-5;
   const DiffusionCurveImage image = iconLikeImage(256, 256);
   const Comparison converged = compareWithDirect(image, options);
   EXPECT_TRUE(converged.report.converged);
-  const std::vector<double>& r = converged.report.residuals;
-  ASSERT_EQ(r.size(), static_cast<size_t>(converged.report.fine_cycles) + 1);
-  EXPECT_LE(r.back(), 1e-6);
-  EXPECT_GT(r[r.size() - 2], 1e-6);  // it stopped at the first cycle below the tolerance
-  EXPECT_LE(converged.mae, 1e-4);
-  // Too few cycles allowed: reported as not converged.
+  const std::vector<double>& e = converged.report.error_estimates;
+  // One estimate per iterate: the FMG start and each iteration's result.
+  ASSERT_EQ(e.size(), static_cast<size_t>(converged.report.fine_cycles) + 1);
+  ASSERT_GE(e.size(), 2u);
+  EXPECT_LE(e.back(), 1e-5);
+  EXPECT_GT(e[e.size() - 2], 1e-5);  // it stopped at the first iterate below the tolerance
+  EXPECT_EQ(converged.report.residuals.size(), e.size());
+  EXPECT_LE(converged.mae, 2e-5);
+  // Too few iterations allowed: reported as not converged.
   options.max_fine_cycles = 1;
   const Comparison capped = compareWithDirect(image, options);
   EXPECT_FALSE(capped.report.converged);
   EXPECT_EQ(capped.report.fine_cycles, 1);
+  EXPECT_GT(capped.mae, converged.mae);
 }
 
-TEST(MultigridTest, ResidualAtLeastHalvesWithEveryVCycleForClosedCurves) {
-  const std::vector<double> r = residualHistory(gradientCircleImage(256, 256), 4);
-  ASSERT_EQ(r.size(), 5u);
-  EXPECT_GT(r[0], 1e-4);  // the FMG start is not already converged
-  for (size_t k = 1; k < r.size(); ++k) EXPECT_LT(r[k], 0.5 * r[k - 1]) << "cycle " << k;
+TEST(MultigridTest, FixedIterationsIgnoreTheTolerance) {
+  const MultigridReport report = fixedIterations(iconLikeImage(128, 128), 3);
+  EXPECT_EQ(report.fine_cycles, 3);
+  EXPECT_FALSE(report.converged);
+  EXPECT_EQ(report.residuals.size(), 4u);
+  EXPECT_EQ(report.updates.size(), 3u);
 }
 
-TEST(MultigridTest, ResidualKeepsShrinkingWithBarriersAndOpenCurveEnds) {
-  // Curve ends and barrier tips are where the coarse grids see the geometry least well:
-  // convergence is slower and not monotone per cycle, but steady over pairs of cycles.
-  const std::vector<double> r = residualHistory(iconLikeImage(256, 256), 6);
-  ASSERT_EQ(r.size(), 7u);
-  for (size_t k = 2; k < r.size(); ++k) EXPECT_LT(r[k], 0.5 * r[k - 2]) << "cycle " << k;
-  EXPECT_LT(r.back(), 0.01 * r.front());
+TEST(MultigridTest, ErrorEstimateFallsTenfoldPerIterationForClosedCurves) {
+  const MultigridReport report = fixedIterations(gradientCircleImage(256, 256), 4);
+  const std::vector<double>& e = report.error_estimates;
+  ASSERT_EQ(e.size(), 4u);
+  EXPECT_GT(e[0], 1e-4);  // the FMG start is not already converged
+  for (size_t k = 1; k < e.size(); ++k) EXPECT_LT(e[k], 0.1 * e[k - 1]) << "iteration " << k;
+}
+
+TEST(MultigridTest, ErrorEstimateKeepsFallingWithBarriersAndOpenCurveEnds) {
+  // Curve ends and barrier tips are where the coarse grids see the geometry least well.
+  const MultigridReport report = fixedIterations(iconLikeImage(256, 256), 6);
+  const std::vector<double>& e = report.error_estimates;
+  ASSERT_EQ(e.size(), 6u);
+  for (size_t k = 1; k < e.size(); ++k) EXPECT_LT(e[k], 0.5 * e[k - 1]) << "iteration " << k;
 }
 
 TEST(MultigridTest, RejectsInconsistentHierarchies) {

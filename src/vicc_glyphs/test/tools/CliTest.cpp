@@ -83,8 +83,28 @@ TEST_F(CliTest, RendersAnSvgAtTheRequestedSizeWithReportAndDci) {
   EXPECT_EQ(rgbAt(image, 24, 24), cv::Vec3b(255, 0, 0));
   EXPECT_EQ(rgbAt(image, 2, 2), cv::Vec3b(255, 255, 255));
   EXPECT_TRUE(fs::exists(xml));
-  EXPECT_NE(result.out.find("rms residual after cycle 2"), std::string::npos) << result.out;
+  // The default stops on the error tolerance and says so.
+  EXPECT_NE(result.out.find("(error tolerance reached)"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("FMG start  : rms residual"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("estimated max error"), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("time ms"), std::string::npos);
+  EXPECT_EQ(result.err.find("warning"), std::string::npos) << result.err;
+}
+
+TEST_F(CliTest, CyclesOverrideTheToleranceAndExcludeIt) {
+  const fs::path png = dir_ / "square.png";
+  const std::string render = "render " + data("red_square.svg") + " --out " + png.string();
+  const ToolRun fixed = run(render + " --size 48 --report --cycles 3");
+  ASSERT_EQ(fixed.exit_code, 0) << fixed.err;
+  EXPECT_NE(fixed.out.find(" 3 CG iterations"), std::string::npos) << fixed.out;
+  EXPECT_NE(fixed.out.find("iteration 3: rms residual"), std::string::npos) << fixed.out;
+  EXPECT_EQ(fixed.out.find("tolerance reached"), std::string::npos) << fixed.out;
+  const ToolRun both = run(render + " --cycles 3 --tolerance 0.01");
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("--cycles and --tolerance exclude each other"), std::string::npos);
+  const ToolRun bad = run(render + " --tolerance -1");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--tolerance needs a positive number"), std::string::npos);
 }
 
 TEST_F(CliTest, BadArgumentsFailWithAMessage) {

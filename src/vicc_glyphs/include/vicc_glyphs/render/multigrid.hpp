@@ -3,11 +3,16 @@
 // problem, assembled by re-rasterising the curves at that level's resolution (averaging fine
 // constraints into coarse cells does not give a usable coarse problem, see rendering.md):
 // - FMG: the coarsest problem is smoothed to convergence, its solution is interpolated as the
-//   initial guess of the next finer problem, which gets `intermediate_cycles` V-cycles, and so
-//   on up to the finest level, which gets `fine_cycles` V-cycles.
-// - V-cycle: red-black Gauss-Seidel smoothing, residual restricted by summing 2x2 children
+//   initial guess of the next finer problem, which gets `intermediate_cycles` iterations, and
+//   so on up to the finest level, which iterates until the error estimate is at most
+//   `tolerance` (or for `fine_cycles` iterations when the tolerance is 0).
+// - Iteration: conjugate gradients preconditioned by one V-cycle (multigrid-preconditioned
+//   CG), robust where barriers leave regions that the coarse problems couple much more weakly
+//   or strongly than the fine one (a plain V-cycle iteration diverges or stalls there).
+// - V-cycle: red-black Gauss-Seidel pre-smoothing and its adjoint (black-red) post-smoothing,
+//   the residual restricted with the transpose of the curve-aware bilinear prolongation
 //   (cell-centred grids, unscaled Laplacian), the coarse level's operator with zero correction
-//   at its Dirichlet cells, bilinear prolongation of the correction.
+//   at its Dirichlet cells: a symmetric positive definite preconditioner.
 
 #include <functional>
 #include <memory>
@@ -18,27 +23,38 @@
 namespace vicc_glyphs {
 
 struct MultigridOptions {
-  int pre_smoothing = 2;          ///< red-black sweeps before the coarse correction
-  int post_smoothing = 2;         ///< red-black sweeps after it
-  int intermediate_cycles = 1;    ///< V-cycles on each level between coarsest and finest (FMG)
-  int fine_cycles = 2;            ///< V-cycles on the finest level
-  int coarsest_sweeps = 100;      ///< smoothing sweeps that solve the coarsest level
-  int coarsest_size = 4;          ///< coarsen until the larger grid side is at most this
-  bool record_residuals = false;  ///< compute the finest level's residual after each cycle
-  /// > 0: instead of `fine_cycles`, V-cycle the finest level until its rms residual is at most
-  /// this (or `max_fine_cycles` are done); the residuals are then always recorded.
-  double residual_tolerance = 0.0;
+  int pre_smoothing = 3;          ///< red-black sweeps before the coarse correction
+  int post_smoothing = 3;         ///< black-red sweeps after it (equal counts: symmetric)
+  int intermediate_cycles = 1;    ///< CG iterations on each level between coarsest and finest
+  int coarsest_sweeps = 100;      ///< smoothing sweeps that solve the coarsest level (even)
+  int coarsest_size = 16;         ///< coarsen until the larger grid side is at most this
+  bool record_residuals = false;  ///< record the finest level's residuals and estimates
+  /// > 0 (the default): iterate on the finest level until the error estimate, the largest
+  /// magnitude of the (balanced) V-cycle's correction B r over the free pixels and channels
+  /// (colour units, 0..1), is at most this, at most `max_fine_cycles` times; the history is
+  /// then always recorded. 0: `fine_cycles` iterations, whatever the error.
+  double tolerance = kDefaultTolerance;
   int max_fine_cycles = 50;
+  int fine_cycles = 2;  ///< iterations on the finest level when tolerance is 0
+
+  /// About half an 8-bit colour step (1/510): on the ladybug DCI (the slowest sample) the
+  /// true largest error is then about 7x this, the mean error 0.003 (docs/rendering.md).
+  static constexpr double kDefaultTolerance = 2e-3;
 };
 
 struct MultigridReport {
   int levels = 0;
-  int fine_cycles = 0;  ///< V-cycles done on the finest level
-  /// With residual_tolerance: whether the residual reached it within max_fine_cycles.
+  int fine_cycles = 0;  ///< CG iterations (one V-cycle each) done on the finest level
+  /// With a tolerance: whether the error estimate reached it within max_fine_cycles.
   bool converged = false;
-  /// RMS residual over the finest level's free pixels and all channels: entry 0 after the FMG
-  /// interpolation, entry k after fine V-cycle k (only with record_residuals).
+  /// Over the finest level's free pixels and all channels (with record_residuals or a
+  /// tolerance): RMS residual (entry 0 at the FMG start, entry k after iteration k); error
+  /// estimate (largest magnitude, see tolerance) of the iterate after iteration k (entry k;
+  /// with a tolerance the last one is the one that met it); RMS update of iteration k+1
+  /// (entry k).
   std::vector<double> residuals;
+  std::vector<double> error_estimates;
+  std::vector<double> updates;
 };
 
 /// Grid sizes of the hierarchy, finest first: each level halves (rounding up) the previous one
