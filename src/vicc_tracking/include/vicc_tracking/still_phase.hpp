@@ -8,9 +8,9 @@
 namespace vicc_tracking {
 
 struct StillPhaseConfig {
-  double duration = 1.0;         ///< seconds of IMU data to average
-  double max_gyro_std = 0.05;    ///< rad/s; more means the rig moved
-  double max_accel_std = 0.5;    ///< m/s^2
+  double duration = 1.0;       ///< seconds of IMU data to average
+  double max_gyro_std = 0.05;  ///< rad/s; more means the rig moved
+  double max_accel_std = 0.5;  ///< m/s^2
   void validate() const;
 };
 

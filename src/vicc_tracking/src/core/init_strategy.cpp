@@ -65,7 +65,8 @@ class ConstantVelocityInit : public InitStrategy {
     const double scale = (stamp - history_.back().stamp) / previous_dt;
     const Eigen::AngleAxisd rotation(motion.linear());
     Eigen::Isometry3d scaled = Eigen::Isometry3d::Identity();
-    scaled.linear() = Eigen::AngleAxisd(rotation.angle() * scale, rotation.axis()).toRotationMatrix();
+    scaled.linear() =
+        Eigen::AngleAxisd(rotation.angle() * scale, rotation.axis()).toRotationMatrix();
     scaled.translation() = motion.translation() * scale;
     return last * scaled;
   }
@@ -140,11 +141,11 @@ class EkfInit : public InitStrategy {
     if (context_.ekf.imu_aided_virtual_velocity && history_.size() >= 2 &&
         previous_interval_end_ == previous.stamp) {
       const StampedPose& older = history_.back(1);
-      velocities_.insert(velocities_.begin(),
-                         velocityAtIntervalEnd(toEigen(older.orientation), older.position,
-                                               previous.position, previous.stamp - older.stamp,
-                                               previous_steps_, context_.calibration,
-                                               context_.gravity_map));
+      velocities_.insert(
+          velocities_.begin(),
+          velocityAtIntervalEnd(toEigen(older.orientation), older.position, previous.position,
+                                previous.stamp - older.stamp, previous_steps_, context_.calibration,
+                                context_.gravity_map));
       if (velocities_.size() > 2) velocities_.pop_back();
     } else {
       velocities_.clear();

@@ -35,9 +35,9 @@ class TrackerRos {
   /// currentFrame() is the frame just tracked), the report, the depth message and
   /// T_published-map_tracker-map. Lets the fusion work on the frame without a copy and hand
   /// its model prediction back (frame-to-model) before the next frame arrives.
-  using FrameHook = std::function<void(Tracker& tracker, const FrameReport& report,
-                                       const sensor_msgs::Image& depth,
-                                       const Eigen::Isometry3d& map_alignment)>;
+  using FrameHook =
+      std::function<void(Tracker& tracker, const FrameReport& report,
+                         const sensor_msgs::Image& depth, const Eigen::Isometry3d& map_alignment)>;
   void setFrameHook(FrameHook hook) { frame_hook_ = std::move(hook); }
   const TrackerNodeSettings& settings() const { return settings_; }
 
