@@ -1,5 +1,7 @@
 #include "vicc_anatomy_viz/avatar_view/render_batches.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace vicc_anatomy_viz::avatar_view {
@@ -47,6 +49,14 @@ bool sameTextureImage(const TextureState& a, const TextureState& b) {
   if (a.kind != b.kind) return false;
   if (a.kind == TextureKind::kNone) return true;
   return a.level == b.level && a.levels == b.levels && a.amplitude == b.amplitude;
+}
+
+float seeThroughOpacity(bool transparency, float skin_alpha, float see_through_alpha) {
+  const auto unit = [](float value, float fallback) {
+    return std::isfinite(value) ? std::clamp(value, 0.f, 1.f) : fallback;
+  };
+  const float through_skin = 1.f - unit(skin_alpha, 1.f);
+  return std::max(through_skin, transparency ? unit(see_through_alpha, 0.8f) : 0.f);
 }
 
 bool sameMaterial(const DrawItem& a, const DrawItem& b) {

@@ -12,12 +12,12 @@ namespace {
 constexpr float kRegionLift = 0.0015f;
 constexpr float kProxyLift = 0.003f;
 
-}  // namespace
-
 float innerOpacity(const VisualOptions& options) {
-  const float through_skin = 1.f - std::clamp(options.skin_alpha, 0.f, 1.f);
-  return std::max(through_skin, options.transparency ? options.see_through_alpha : 0.f);
+  return avatar_view::seeThroughOpacity(options.transparency, options.skin_alpha,
+                                        options.see_through_alpha);
 }
+
+}  // namespace
 
 AvatarVisual::AvatarVisual(rviz::DisplayContext* context, Ogre::SceneNode* parent)
     : context_(context),

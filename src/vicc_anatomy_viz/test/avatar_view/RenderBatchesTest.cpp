@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "synthetic_avatar.hpp"
 #include "vicc_anatomy_viz/avatar_view/render_batches.hpp"
 
@@ -93,6 +95,20 @@ TEST(RenderBatchesTest, OutOfRangeTargetsNeverRemoveSkin) {
   const RenderBatches batches = planBatches(state, syntheticAvatar());
   EXPECT_EQ(batches.skin_triangles, (std::vector<int>{0, 1}));
   EXPECT_EQ(batches.materials.size(), 1u);
+}
+
+TEST(RenderBatchesTest, SeeThroughOpacityFollowsTransparencyAndSkinAlpha) {
+  // View-dependent transparency: the see-through alpha; off with an opaque skin: hidden.
+  EXPECT_FLOAT_EQ(seeThroughOpacity(true, 1.f, 0.8f), 0.8f);
+  EXPECT_FLOAT_EQ(seeThroughOpacity(false, 1.f, 0.8f), 0.f);
+  // A translucent skin lets its share through either way, whichever is more.
+  EXPECT_FLOAT_EQ(seeThroughOpacity(false, 0.3f, 0.8f), 0.7f);
+  EXPECT_FLOAT_EQ(seeThroughOpacity(true, 0.3f, 0.5f), 0.7f);
+  EXPECT_FLOAT_EQ(seeThroughOpacity(true, 0.9f, 0.5f), 0.5f);
+  // Out of range is clamped; not finite counts as the default.
+  EXPECT_FLOAT_EQ(seeThroughOpacity(true, 2.f, 1.5f), 1.f);
+  EXPECT_FLOAT_EQ(seeThroughOpacity(false, std::nanf(""), 0.8f), 0.f);
+  EXPECT_FLOAT_EQ(seeThroughOpacity(true, 1.f, std::nanf("")), 0.8f);
 }
 
 }  // namespace

@@ -41,6 +41,12 @@ bool sameTextureImage(const TextureState& a, const TextureState& b);
 /// frequency only scales texture coordinates) and the same placement (inner or on the skin).
 bool sameMaterial(const DrawItem& a, const DrawItem& b);
 
+/// How opaque the encoded inner structures are drawn over the skin that hides them: the
+/// see-through alpha with view-dependent transparency, at least what a translucent skin lets
+/// through (1 - skin alpha); 0 when neither (the opaque skin hides them). Inputs are clamped
+/// to [0, 1]; a non-finite one counts as its default (skin 1, see-through 0.8).
+float seeThroughOpacity(bool transparency, float skin_alpha, float see_through_alpha);
+
 /// The batches of `state` on `model` (items whose target index is out of range are left out
 /// of every batch's skin replacement but still get a material).
 RenderBatches planBatches(const AvatarDrawState& state, const avatar::AvatarModel& model);

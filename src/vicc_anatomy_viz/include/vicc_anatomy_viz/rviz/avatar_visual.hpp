@@ -44,11 +44,6 @@ struct VisualOptions {
   double alternation_period_s = 1.5;
 };
 
-/// How opaque the encoded inner structures are drawn over the skin that hides them: the
-/// see-through alpha with view-dependent transparency, at least what a translucent skin lets
-/// through; 0 when neither (the skin hides them).
-float innerOpacity(const VisualOptions& options);
-
 class AvatarVisual {
  public:
   using SelectCallback = std::function<void(const std::string&)>;

@@ -6,7 +6,9 @@
 // (faded, per object) are drawn only inside the marked pixels. So the skin becomes
 // semi-transparent exactly where it hides an encoded structure from the current camera and
 // keeps its context everywhere else, and no skin pixel is drawn twice. Set up per render
-// queue group.
+// queue group. The depth clear comes after rviz's main queue: an object of another display in
+// front of an encoded structure does not hide it (the structure shows through it as through
+// the skin).
 
 #include <OGRE/OgreRenderQueueListener.h>
 
