@@ -34,6 +34,11 @@ std::string ParsedArguments::value(const std::string& name, const std::string& f
   return found == values.end() ? fallback : found->second;
 }
 
+std::vector<std::string> ParsedArguments::all(const std::string& name) const {
+  const auto found = all_values.find(name);
+  return found == all_values.end() ? std::vector<std::string>{} : found->second;
+}
+
 std::string ParsedArguments::required(const std::string& name, const std::string& context) const {
   const auto found = values.find(name);
   if (found == values.end() || found->second.empty()) {
@@ -79,12 +84,13 @@ ParsedArguments parseArguments(const std::vector<std::string>& args,
     if (spec->value_name.empty()) {
       if (equals != std::string::npos) throw UsageError("option '--" + name + "' takes no value");
       parsed.flags.insert(name);
-    } else if (equals != std::string::npos) {
-      parsed.values[name] = arg.substr(equals + 1);
-    } else if (i + 1 < args.size()) {
-      parsed.values[name] = args[++i];
     } else {
-      throw UsageError("option '--" + name + "' needs a value " + spec->value_name);
+      if (equals == std::string::npos && i + 1 >= args.size()) {
+        throw UsageError("option '--" + name + "' needs a value " + spec->value_name);
+      }
+      const std::string value = equals != std::string::npos ? arg.substr(equals + 1) : args[++i];
+      parsed.values[name] = value;
+      parsed.all_values[name].push_back(value);
     }
   }
   return parsed;

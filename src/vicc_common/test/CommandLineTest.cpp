@@ -32,6 +32,17 @@ TEST(CommandLine, ParsesBothValueFormsFlagsAndPositionals) {
   EXPECT_EQ(parsed.value("missing", "fallback"), "fallback");
 }
 
+TEST(CommandLine, RepeatedOptionsKeepEveryValueInOrder) {
+  const ParsedArguments parsed = parseArguments({"--size=1", "--size", "2"}, kSpecs);
+  EXPECT_EQ(parsed.value("size"), "2");  // the last one wins for value()
+  EXPECT_EQ(parsed.all("size"), (std::vector<std::string>{"1", "2"}));
+  EXPECT_TRUE(parsed.all("scale").empty());
+}
+
+TEST(CommandLine, UsageErrorIsAnInvalidArgument) {
+  EXPECT_THROW(parseArguments({"--nope"}, kSpecs), std::invalid_argument);
+}
+
 TEST(CommandLine, DoubleDashEndsTheOptions) {
   const ParsedArguments parsed = parseArguments({"--", "--size", "-x"}, kSpecs);
   EXPECT_EQ(parsed.positional, (std::vector<std::string>{"--size", "-x"}));

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "test_config.hpp"
+#include "vicc_common/json_parameters.hpp"
 #include "vicc_common/parameter_names.hpp"
 #include "vicc_common/yaml_parameters.hpp"
 
@@ -100,6 +101,17 @@ TEST(YamlParameters, NameCollectorListsKeyPaths) {
   vicc_common::collectParameterNames(Outer{}, names);
   EXPECT_EQ(names, (std::set<std::string>{"count", "enabled", "name", "weights", "shape",
                                           "inner/gain", "inner/levels"}));
+}
+
+TEST(YamlParameters, JsonWriterNestsSectionsAndWritesTextTypesAsText) {
+  Outer config;
+  config.shape = Shape::kSquare;
+  nlohmann::json json;
+  vicc_common::writeJsonParameters(config, json);
+  EXPECT_EQ(json["count"], 3);
+  EXPECT_EQ(json["shape"], "square");
+  EXPECT_EQ(json["inner"]["levels"], nlohmann::json::array({4, 2}));
+  EXPECT_DOUBLE_EQ(json["inner"]["gain"].get<double>(), 0.5);
 }
 
 TEST(YamlParameters, MissingFileIsNamed) {

@@ -12,8 +12,10 @@
 
 namespace vicc_common::cli {
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+/// A bad argument of the command line (a std::invalid_argument, so code that reports bad
+/// arguments reports it too); tools catch it first to print their usage.
+struct UsageError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
 };
 
 struct OptionSpec {
@@ -24,13 +26,16 @@ struct OptionSpec {
 
 struct ParsedArguments {
   std::vector<std::string> positional;
-  std::map<std::string, std::string> values;
+  std::map<std::string, std::string> values;  ///< the last value of each option given
+  std::map<std::string, std::vector<std::string>> all_values;  ///< every value, in order
   std::set<std::string> flags;
 
   bool has(const std::string& name) const { return values.count(name) || flags.count(name); }
   bool flag(const std::string& name) const { return flags.count(name) > 0; }
   /// The option's value, or `fallback` if it was not given.
   std::string value(const std::string& name, const std::string& fallback = "") const;
+  /// Every value of a repeatable option in the order given; empty if it was not given.
+  std::vector<std::string> all(const std::string& name) const;
   /// The option's value; UsageError "<context> needs --<name>" if it is missing or empty.
   std::string required(const std::string& name, const std::string& context) const;
   /// An integer option in [minimum, maximum], `fallback` if not given; UsageError otherwise.
