@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
 #include <nav_msgs/Path.h>
@@ -25,18 +26,25 @@ namespace vicc_tracking {
 
 class TrackerRos {
  public:
+  /// Who warns about parameters in the private namespace that no table knows: the tracker
+  /// itself, or the node that embeds it and reads more parameters there (parameterNames()).
+  enum class UnknownParameters { kWarn, kLeaveToOwner };
+
   /// Throws std::invalid_argument when a parameter is invalid.
-  TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+  TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
+             UnknownParameters unknown_parameters = UnknownParameters::kWarn);
 
   /// Called after every accepted depth frame, in the depth callback, with the tracker (its
   /// currentFrame() is the frame just tracked), the report, the depth message and
   /// T_published-map_tracker-map. Lets the fusion work on the frame without a copy and hand
   /// its model prediction back (frame-to-model) before the next frame arrives.
-  using FrameHook = std::function<void(Tracker& tracker, const FrameReport& report,
-                                       const sensor_msgs::Image& depth,
-                                       const Eigen::Isometry3d& map_alignment)>;
+  using FrameHook =
+      std::function<void(Tracker& tracker, const FrameReport& report,
+                         const sensor_msgs::Image& depth, const Eigen::Isometry3d& map_alignment)>;
   void setFrameHook(FrameHook hook) { frame_hook_ = std::move(hook); }
   const TrackerNodeSettings& settings() const { return settings_; }
+  /// Resolved names of the parameters the tracker reads.
+  const std::set<std::string>& parameterNames() const { return parameter_names_; }
 
  private:
   void onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info);
@@ -52,6 +60,7 @@ class TrackerRos {
   Eigen::Isometry3d mapAlignment(const Eigen::Isometry3d& first_pose, const ros::Time& stamp);
   void forwardImu(const ImuSample& sample);
 
+  std::set<std::string> parameter_names_;  // filled by the readers of config_ and settings_
   TrackerConfig config_;
   TrackerNodeSettings settings_;
   FrameHook frame_hook_;
