@@ -40,7 +40,8 @@ add_library(vicc_avatar_snapshot_lib STATIC
 )
 target_compile_options(vicc_avatar_snapshot_lib PRIVATE ${VICC_WARNINGS})
 target_include_directories(vicc_avatar_snapshot_lib PUBLIC src/tools)
-target_link_libraries(vicc_avatar_snapshot_lib PUBLIC vicc_anatomy_viz_rviz ${X11_LIBRARIES})
+target_link_libraries(vicc_avatar_snapshot_lib PUBLIC vicc_anatomy_viz_rviz vicc_common_cli
+  ${X11_LIBRARIES})
 
 add_executable(vicc_avatar_snapshot src/tools/vicc_avatar_snapshot.cpp)
 target_compile_options(vicc_avatar_snapshot PRIVATE ${VICC_WARNINGS})

@@ -34,6 +34,11 @@ target_compile_options(patient_status_server_rostest PRIVATE ${VICC_WARNINGS})
 target_compile_definitions(patient_status_server_rostest PRIVATE ${VICC_TEST_DEFINITIONS})
 target_link_libraries(patient_status_server_rostest vicc_anatomy_viz_ros ${catkin_LIBRARIES})
 add_dependencies(patient_status_server_rostest patient_status_server)
+# The node's parameter reader (types, defaults, typos) on a real parameter server.
+add_rostest_gtest(server_settings_rostest test/ros/server_settings.test
+  test/ros/ServerSettingsRostest.cpp)
+target_compile_options(server_settings_rostest PRIVATE ${VICC_WARNINGS})
+target_link_libraries(server_settings_rostest vicc_anatomy_viz_ros ${catkin_LIBRARIES})
 # The same tests against the node as launch/patient_status_server.launch starts it.
 add_rostest(test/ros/patient_status_server_launch.test DEPENDENCIES patient_status_server_rostest)
 include(cmake/database_files_tests.cmake)

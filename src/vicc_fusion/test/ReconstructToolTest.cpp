@@ -8,13 +8,17 @@
 
 #include "reconstruct_options.hpp"
 #include "reconstruct_report.hpp"
+#include "vicc_common/yaml_parameters.hpp"
+#include "vicc_fusion/fusion_config_yaml.hpp"
+#include "vicc_fusion/fusion_parameters.hpp"
 #include "vicc_tracking/tracker_config_yaml.hpp"
 
-#ifndef VICC_TRACKER_CONFIG_DIR
-#error "VICC_TRACKER_CONFIG_DIR must be defined by the build"
+#if !defined(VICC_TRACKER_CONFIG_DIR) || !defined(VICC_FUSION_CONFIG_DIR)
+#error "VICC_TRACKER_CONFIG_DIR and VICC_FUSION_CONFIG_DIR must be defined by the build"
 #endif
 
 using namespace vicc_fusion;
+using vicc_common::toYamlParameters;
 
 namespace {
 
@@ -114,22 +118,22 @@ TEST(ReconstructToolTest, ConfigFileRoundTripsNonDefaultValues) {
 
   ReconstructOptions options;
   ASSERT_TRUE(parse({"rec.bag", "--config", file.path().c_str()}, options));
-  EXPECT_EQ(options.config_path, file.path());
+  EXPECT_EQ(options.config_paths, std::vector<std::string>{file.path()});
   EXPECT_EQ(options.init, vicc_tracking::InitStrategyType::kImu);
   EXPECT_EQ(options.levels, 2);
   EXPECT_FALSE(options.tracker.preprocessing.bilateral_filter);
   EXPECT_EQ(options.tracker.icp.iterations_per_level, (std::vector<int>{7, 3}));
   EXPECT_EQ(options.tracker.ekf.process_noise_position, 2.5e-7);
   EXPECT_EQ(options.tracker.ekf.measurement_noise_rotation, 1.0 / 3.0);
-  EXPECT_EQ(options.tracker.ekf.process_noise_velocity, vicc_tracking::EkfConfig{}.process_noise_velocity);
+  EXPECT_EQ(options.tracker.ekf.process_noise_velocity,
+            vicc_tracking::EkfConfig{}.process_noise_velocity);
   EXPECT_EQ(options.tracker.synchronizer.max_gap, 0.25);
   // Every parameter comes back: the read set writes the same text.
   EXPECT_EQ(vicc_tracking::toYaml(vicc_tracking::loadTrackerParameters(file.path())), yaml);
 
   // --init and --levels on the command line override the file.
   options = ReconstructOptions{};
-  ASSERT_TRUE(parse({"rec.bag", "--config", file.path().c_str(), "--init", "ekf", "--levels",
-                     "1"},
+  ASSERT_TRUE(parse({"rec.bag", "--config", file.path().c_str(), "--init", "ekf", "--levels", "1"},
                     options));
   EXPECT_EQ(options.init, vicc_tracking::InitStrategyType::kEkf);
   EXPECT_EQ(options.tracker.init_strategy, vicc_tracking::InitStrategyType::kEkf);
@@ -174,6 +178,29 @@ TEST(ReconstructToolTest, ConfigFilesOfThePackageLoad) {
   EXPECT_EQ(ekf_defaults.imu_noise_file, "");
 }
 
+TEST(ReconstructToolTest, EveryShippedParameterFileLoads) {
+  // Every node parameter file of vicc_tracking/config and vicc_fusion/config, and every IMU
+  // noise file: a file added later is covered without touching this test.
+  std::vector<std::string> parameter_files = {std::string(VICC_FUSION_CONFIG_DIR) + "/fusion.yaml"};
+  const std::filesystem::path tracker_dir = VICC_TRACKER_CONFIG_DIR;
+  for (const auto& entry : std::filesystem::directory_iterator(tracker_dir)) {
+    if (entry.path().extension() == ".yaml") parameter_files.push_back(entry.path().string());
+  }
+  ASSERT_GE(parameter_files.size(), 4u);  // fusion, tracker, tracker_thesis, imu_trusting
+  for (const std::string& file : parameter_files) {
+    FusionParameterSet parameters;
+    EXPECT_NO_THROW(loadFusionParameters(file, parameters)) << file;
+    ReconstructOptions options;
+    EXPECT_NO_THROW(parse({"a.bag", "--config", file.c_str()}, options)) << file;
+  }
+  int imu_files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(tracker_dir / "imu")) {
+    EXPECT_NO_THROW(vicc_tracking::loadImuNoise(entry.path().string())) << entry.path();
+    ++imu_files;
+  }
+  EXPECT_GE(imu_files, 2);
+}
+
 TEST(ReconstructToolTest, ImuNoiseFileDerivesTheProcessNoise) {
   const std::string file = std::string(VICC_TRACKER_CONFIG_DIR) + "/imu/bosch_bmi270.yaml";
   ReconstructOptions options;
@@ -198,8 +225,57 @@ TEST(ReconstructToolTest, ConfigFileRejectsUnknownKeysNamingThem) {
   EXPECT_NE(nested.find("process_noise_rotation"), std::string::npos) << nested;  // the known
   const std::string top = configError("init_stratgy: imu\n");
   EXPECT_NE(top.find("init_stratgy: unknown key"), std::string::npos) << top;
-  const std::string section = configError("fusion:\n  supersampling: 2\n");
-  EXPECT_NE(section.find("fusion: unknown key"), std::string::npos) << section;
+  // The fusion node's sections are known (fusion.yaml loads), their keys are checked too.
+  const std::string section = configError("fusion:\n  supersampeling: 2\n");
+  EXPECT_NE(section.find("fusion/supersampeling: unknown key"), std::string::npos) << section;
+  const std::string prediction = configError("prediction:\n  stable_confidence: 2\n");
+  EXPECT_NE(prediction.find("prediction/stable_confidence: unknown key"), std::string::npos)
+      << prediction;  // the prediction takes fusion/stable_confidence
+}
+
+TEST(ReconstructToolTest, ConfigReadsTheFusionNodesFileToo) {
+  const std::string fusion_yaml = std::string(VICC_FUSION_CONFIG_DIR) + "/fusion.yaml";
+  ReconstructOptions defaults;
+  ASSERT_TRUE(parse({"a.bag", "--config", fusion_yaml.c_str()}, defaults));
+  EXPECT_EQ(toYamlParameters(defaults.model), toYamlParameters(FrameToModelConfig{}))
+      << "fusion.yaml documents the defaults";
+
+  const TempYaml fusion_file(
+      "frame_to_model: false\nmin_prediction_coverage: 0.75\ntrack: false\n"
+      "fusion:\n  supersampling: 2\n  stable_confidence: 5.0\n"
+      "prediction:\n  splat_radius_scale: 1.3\n");
+  const TempYaml tracker_file("init_strategy: identity\npreprocessing:\n  pyramid_levels: 2\n");
+  ReconstructOptions options;
+  ASSERT_TRUE(parse(
+      {"a.bag", "--config", tracker_file.path().c_str(), "--config", fusion_file.path().c_str()},
+      options));
+  EXPECT_EQ(options.init, vicc_tracking::InitStrategyType::kIdentity);
+  EXPECT_EQ(options.levels, 2);
+  EXPECT_FALSE(options.frame_to_model);
+  EXPECT_EQ(options.model.min_prediction_coverage, 0.75);
+  EXPECT_EQ(options.model.fusion.supersampling, 2);
+  EXPECT_EQ(options.model.fusion.stable_confidence, 5.0);
+  EXPECT_EQ(options.model.prediction.splat_radius_scale, 1.3);
+  const nlohmann::json json =
+      makeReport(options, ReconstructRun{}, vicc_tracking::TrackingStatistics{});
+  EXPECT_EQ(json["fusion_parameters"]["fusion"]["supersampling"], 2);
+  EXPECT_EQ(json["fusion_parameters"]["frame_to_model"], false);
+  EXPECT_EQ(json["settings"]["config_files"].size(), 2u);
+
+  // A later file overrides an earlier one; keys it leaves out stay as the earlier set them.
+  const TempYaml later("fusion:\n  supersampling: 3\n");
+  options = ReconstructOptions{};
+  ASSERT_TRUE(
+      parse({"a.bag", "--config", fusion_file.path().c_str(), "--config", later.path().c_str()},
+            options));
+  EXPECT_EQ(options.model.fusion.supersampling, 3);
+  EXPECT_EQ(options.model.fusion.stable_confidence, 5.0);
+
+  // A value fusion's validate() rejects names the file and the section.
+  const std::string invalid = configError("fusion:\n  supersampling: 9\n");
+  EXPECT_NE(invalid.find(": fusion: surfel fusion: supersampling must be in 1..8"),
+            std::string::npos)
+      << invalid;
 }
 
 TEST(ReconstructToolTest, ConfigFileRejectsWrongTypesNamingTheKey) {

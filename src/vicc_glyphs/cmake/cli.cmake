@@ -8,10 +8,9 @@ endif()
 add_executable(vicc_glyph
   src/tools/vicc_glyph_main.cpp
   src/tools/subcommands.cpp
-  src/tools/command_line.cpp
   src/tools/render_command.cpp)
 target_compile_options(vicc_glyph PRIVATE ${VICC_WARNINGS})
-target_link_libraries(vicc_glyph vicc_glyphs_render vicc_glyphs_io)
+target_link_libraries(vicc_glyph vicc_glyphs_render vicc_glyphs_io vicc_common_cli)
 
 # Median render time, multigrid cycles and error against the direct solve per input.
 add_executable(vicc_glyph_bench bench/glyph_bench.cpp)
@@ -30,13 +29,12 @@ install(TARGETS vicc_glyph vicc_glyph_bench
 if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(vicc_glyph_cli_test
     test/tools/CliTest.cpp
-    test/tools/CommandLineTest.cpp
-    src/tools/command_line.cpp)
+    test/tools/CommandLineTest.cpp)
   target_compile_options(vicc_glyph_cli_test PRIVATE ${VICC_WARNINGS})
   target_compile_definitions(vicc_glyph_cli_test PRIVATE
     VICC_GLYPH_BINARY="$<TARGET_FILE:vicc_glyph>"
     TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/test/tools")
   target_include_directories(vicc_glyph_cli_test SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
-  target_link_libraries(vicc_glyph_cli_test ${OpenCV_LIBS} gtest_main)
+  target_link_libraries(vicc_glyph_cli_test vicc_common_cli ${OpenCV_LIBS} gtest_main)
   add_dependencies(vicc_glyph_cli_test vicc_glyph)
 endif()

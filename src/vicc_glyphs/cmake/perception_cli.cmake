@@ -6,7 +6,6 @@ endif()
 
 target_sources(vicc_glyph PRIVATE
   src/tools/model_path.cpp
-  src/tools/number_option.cpp
   src/tools/levels_command.cpp
   src/tools/fit_command.cpp)
 target_compile_definitions(vicc_glyph PRIVATE

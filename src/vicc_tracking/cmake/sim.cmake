@@ -29,4 +29,4 @@ endif()
 # R against the frame interval on the scenarios (docs/imu_noise.md).
 add_executable(vicc_extrapolation_error src/tools/vicc_extrapolation_error.cpp)
 target_compile_options(vicc_extrapolation_error PRIVATE ${VICC_WARNINGS})
-target_link_libraries(vicc_extrapolation_error vicc_tracking_sim)
+target_link_libraries(vicc_extrapolation_error vicc_tracking_sim vicc_common_cli)

@@ -1,9 +1,13 @@
 #include "vicc_anatomy_viz/ros/patient_status_server.hpp"
 
+#include <set>
+#include <stdexcept>
+
 #include "vicc_anatomy_viz/encoded_status_json.hpp"
 #include "vicc_anatomy_viz/errors.hpp"
 #include "vicc_anatomy_viz/ros/status_message.hpp"
 #include "vicc_anatomy_viz/time_format.hpp"
+#include "vicc_common/ros_parameters.hpp"
 
 namespace vicc_anatomy_viz::ros_adapter {
 
@@ -26,26 +30,46 @@ bool guarded(const char* what, Flag& success, std::string& message, Action actio
 
 }  // namespace
 
-PatientStatusConfig readServerConfig(const ros::NodeHandle& private_nh) {
+PatientStatusServerSettings PatientStatusServerSettings::withDefaultPaths() {
+  PatientStatusServerSettings settings;
+  settings.db = defaultDatabasePath();
+  settings.encoding_config = defaultEncodingConfigPath();
+  settings.anatomy_config = defaultAnatomyConfigPath();
+  return settings;
+}
+
+PatientStatusConfig PatientStatusServerSettings::serviceConfig() const {
   PatientStatusConfig config;
-  private_nh.param<std::string>("db", config.store.path, defaultDatabasePath());
-  private_nh.param<std::string>("encoding_config", config.encoding_config,
-                                defaultEncodingConfigPath());
-  private_nh.param<std::string>("anatomy_config", config.anatomy_config,
-                                defaultAnatomyConfigPath());
-  private_nh.param<std::string>("view", config.view_id, config.view_id);
-  private_nh.param<int>("busy_timeout_ms", config.store.busy_timeout_ms,
-                        config.store.busy_timeout_ms);
-  int max_future_s = static_cast<int>(config.plausibility.max_future_seconds);
-  private_nh.param<int>("max_future_s", max_future_s, max_future_s);
+  config.store.path = db;
+  config.encoding_config = encoding_config;
+  config.anatomy_config = anatomy_config;
+  config.view_id = view;
+  config.store.busy_timeout_ms = busy_timeout_ms;
   config.plausibility.max_future_seconds = max_future_s;
-  config.validate();
   return config;
+}
+
+void PatientStatusServerSettings::validate() const {
+  if (!date.empty() && patient.empty()) {
+    throw std::invalid_argument(
+        "date is set but patient is not (the date selects an "
+        "examination of that patient)");
+  }
+  serviceConfig().validate();
+}
+
+PatientStatusServerSettings readServerSettings(const ros::NodeHandle& private_nh) {
+  PatientStatusServerSettings settings = PatientStatusServerSettings::withDefaultPaths();
+  std::set<std::string> read_names;
+  vicc_common::readRosParameters(private_nh, settings, read_names);
+  vicc_common::warnUnknownRosParameters(private_nh, read_names);
+  return settings;
 }
 
 PatientStatusServer::PatientStatusServer(ros::NodeHandle& nh, ros::NodeHandle& private_nh) {
   (void)nh;
-  service_ = std::make_unique<PatientStatusService>(readServerConfig(private_nh));
+  const PatientStatusServerSettings settings = readServerSettings(private_nh);
+  service_ = std::make_unique<PatientStatusService>(settings.serviceConfig());
   for (const auto& note : service_->model().notes(service_->view())) {
     ROS_INFO("patient_status_server: %s", note.c_str());
   }
@@ -77,8 +101,8 @@ PatientStatusServer::PatientStatusServer(ros::NodeHandle& nh, ros::NodeHandle& p
     ROS_ERROR("patient_status_server: %s (requests will retry)", e.what());
   }
   Selection initial;
-  private_nh.param<std::string>("patient", initial.patient_id, "");
-  private_nh.param<std::string>("date", initial.date, "");
+  initial.patient_id = settings.patient;
+  initial.date = settings.date;
   if (!initial.patient_id.empty()) {
     std::string message;
     if (!applySelection(initial, message, nullptr)) {

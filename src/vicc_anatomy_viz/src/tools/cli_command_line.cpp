@@ -1,5 +1,6 @@
 #include "cli_command_line.hpp"
 
+#include <limits>
 #include <sstream>
 
 namespace vicc_anatomy_viz::cli {
@@ -11,11 +12,18 @@ const std::set<std::string> kReadCommands = {"export", "list",  "dates",   "show
                                              "encode", "check", "history", "backup"};
 
 namespace {
-const std::set<std::string> kFlags = {"--json",         "--replace", "--replace-with-empty",
-                                      "--skip-unknown", "--help",    "-h"};
-const std::set<std::string> kOptions = {
-    "--db",     "--config", "--anatomy", "--view",         "--patient",      "--date",
-    "--format", "--out",    "--hide",    "--busy-timeout", "--group-window", "--max-future"};
+const std::set<std::string> kFlags = {"json", "replace", "replace-with-empty", "skip-unknown",
+                                      "help"};
+const std::set<std::string> kOptions = {"db",      "config",       "anatomy",      "view",
+                                        "patient", "date",         "format",       "out",
+                                        "hide",    "busy-timeout", "group-window", "max-future"};
+
+std::vector<vicc_common::cli::OptionSpec> optionSpecs() {
+  std::vector<vicc_common::cli::OptionSpec> specs;
+  for (const std::string& name : kFlags) specs.push_back({name, "", ""});
+  for (const std::string& name : kOptions) specs.push_back({name, "VALUE", ""});
+  return specs;
+}
 }  // namespace
 
 std::string CommandLine::option(const std::string& name, const std::string& fallback) const {
@@ -32,14 +40,8 @@ std::string CommandLine::required(const std::string& name) const {
 int CommandLine::integerOption(const std::string& name, int fallback) const {
   const auto it = options.find(name);
   if (it == options.end()) return fallback;
-  try {
-    std::size_t used = 0;
-    const int value = std::stoi(it->second, &used);
-    if (used != it->second.size() || value < 0) throw std::invalid_argument(it->second);
-    return value;
-  } catch (const std::exception&) {
-    throw UsageError(name + " needs a non-negative whole number, not '" + it->second + "'");
-  }
+  return vicc_common::cli::parseInteger(name.substr(2), it->second, 0,
+                                        std::numeric_limits<int>::max());
 }
 
 void CommandLine::expectPositional(std::size_t count) const {
@@ -50,32 +52,19 @@ void CommandLine::expectPositional(std::size_t count) const {
 }
 
 CommandLine parseCommandLine(const std::vector<std::string>& args) {
+  // "-h" is the one short option; the rest is the common parser's.
+  std::vector<std::string> long_form = args;
+  for (std::string& arg : long_form) {
+    if (arg == "-h") arg = "--help";
+  }
+  const vicc_common::cli::ParsedArguments parsed =
+      vicc_common::cli::parseArguments(long_form, optionSpecs());
   CommandLine line;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::string arg = args[i];
-    std::string value;
-    bool has_value = false;
-    if (arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos) {
-      value = arg.substr(arg.find('=') + 1);
-      arg = arg.substr(0, arg.find('='));
-      has_value = true;
-    }
-    if (kFlags.count(arg)) {
-      if (has_value) throw UsageError(arg + " takes no value");
-      line.flags.insert(arg);
-    } else if (kOptions.count(arg)) {
-      if (!has_value) {
-        if (i + 1 >= args.size()) throw UsageError(arg + " needs a value");
-        value = args[++i];
-      }
-      line.options[arg] = value;
-    } else if (arg.size() > 1 && arg[0] == '-') {
-      throw UsageError("unknown option " + arg);
-    } else if (line.command.empty()) {
-      line.command = arg;
-    } else {
-      line.positional.push_back(arg);
-    }
+  for (const auto& [name, value] : parsed.values) line.options["--" + name] = value;
+  for (const std::string& name : parsed.flags) line.flags.insert("--" + name);
+  if (!parsed.positional.empty()) {
+    line.command = parsed.positional.front();
+    line.positional.assign(parsed.positional.begin() + 1, parsed.positional.end());
   }
   return line;
 }

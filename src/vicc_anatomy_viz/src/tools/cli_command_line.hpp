@@ -1,19 +1,18 @@
 #pragma once
 // Command-line parsing of vicc_patient: a command, file arguments, --options with values
-// (also --option=value) and flags; anything unknown is a usage error.
+// (also --option=value) and flags; anything unknown is a usage error. The parsing itself is
+// vicc_common's command-line parser, the one every VICC tool uses.
 
 #include <map>
 #include <set>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "vicc_common/command_line.hpp"
+
 namespace vicc_anatomy_viz::cli {
 
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using UsageError = vicc_common::cli::UsageError;
 
 extern const std::set<std::string> kCommands;
 /// Commands that only read: they open the database read-only and never create it.

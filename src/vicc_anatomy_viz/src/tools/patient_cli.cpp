@@ -314,10 +314,9 @@ std::string patientCliUsage() {
 int runPatientCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   try {
     const CommandLine line = cli::parseCommandLine(args);
-    if (line.flag("--help") || line.flag("-h") || line.command.empty()) {
-      (line.command.empty() && !line.flag("--help") && !line.flag("-h") ? err : out)
-          << patientCliUsage();
-      return line.command.empty() && !line.flag("--help") && !line.flag("-h") ? 2 : 0;
+    if (line.flag("--help") || line.command.empty()) {
+      (line.command.empty() && !line.flag("--help") ? err : out) << patientCliUsage();
+      return line.command.empty() && !line.flag("--help") ? 2 : 0;
     }
     if (!cli::kCommands.count(line.command))
       throw UsageError("unknown command '" + line.command + "'");

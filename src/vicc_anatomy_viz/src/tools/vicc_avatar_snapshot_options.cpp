@@ -1,8 +1,10 @@
 #include "vicc_avatar_snapshot_options.hpp"
 
+#include <algorithm>
 #include <regex>
 #include <sstream>
-#include <stdexcept>
+
+#include "vicc_common/command_line.hpp"
 
 namespace vicc_anatomy_viz::snapshot {
 
@@ -15,18 +17,36 @@ const char* const kSnapshotUsage =
 
 namespace {
 
+namespace cli = vicc_common::cli;
+
 constexpr int kMinSide = 64, kMaxSide = 8192;
+
+const std::vector<cli::OptionSpec> kOptionSpecs = {
+    {"db", "FILE", ""},      {"patient", "ID", ""}, {"date", "D", ""},       {"view", "VIEW", ""},
+    {"hide", "CAT,...", ""}, {"size", "WxH", ""},   {"out", "FILE.png", ""},
+};
+
+/// The value of a required option; the message shows its placeholder ("--db FILE").
+std::string requiredValue(const cli::ParsedArguments& parsed, const std::string& name) {
+  const std::string value = parsed.value(name);
+  if (value.empty()) {
+    const auto spec = std::find_if(kOptionSpecs.begin(), kOptionSpecs.end(),
+                                   [&](const cli::OptionSpec& s) { return s.name == name; });
+    throw cli::UsageError("--" + name + " " + spec->value_name + " is required");
+  }
+  return value;
+}
 
 void readSize(const std::string& text, SnapshotOptions& options) {
   std::smatch match;
   if (!std::regex_match(text, match, std::regex("([0-9]{1,5})x([0-9]{1,5})")))
-    throw std::invalid_argument("--size: expected WxH, e.g. 800x1000, got '" + text + "'");
+    throw cli::UsageError("--size: expected WxH, e.g. 800x1000, got '" + text + "'");
   options.width = std::stoi(match[1]);
   options.height = std::stoi(match[2]);
   for (int side : {options.width, options.height})
     if (side < kMinSide || side > kMaxSide)
-      throw std::invalid_argument("--size: each side must be " + std::to_string(kMinSide) + ".." +
-                                  std::to_string(kMaxSide) + " pixels, got '" + text + "'");
+      throw cli::UsageError("--size: each side must be " + std::to_string(kMinSide) + ".." +
+                            std::to_string(kMaxSide) + " pixels, got '" + text + "'");
 }
 
 std::vector<std::string> splitCategories(const std::string& text) {
@@ -41,37 +61,23 @@ std::vector<std::string> splitCategories(const std::string& text) {
 }  // namespace
 
 SnapshotOptions parseSnapshotOptions(const std::vector<std::string>& args) {
-  SnapshotOptions options;
-  bool has_db = false, has_patient = false, has_out = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& option = args[i];
-    if (i + 1 >= args.size()) throw std::invalid_argument(option + ": missing value");
-    const std::string& value = args[++i];
-    if (option == "--db")
-      options.db = value, has_db = true;
-    else if (option == "--patient")
-      options.patient = value, has_patient = true;
-    else if (option == "--date")
-      options.date = value;
-    else if (option == "--out")
-      options.out = value, has_out = true;
-    else if (option == "--hide")
-      options.hidden_categories = splitCategories(value);
-    else if (option == "--size")
-      readSize(value, options);
-    else if (option == "--view") {
-      const auto view = avatar_view::bodyViewFromString(value);
-      if (!view)
-        throw std::invalid_argument("--view: front, back, left or right, got '" + value + "'");
-      options.view = *view;
-    } else {
-      throw std::invalid_argument("unknown option '" + option + "'");
-    }
+  const cli::ParsedArguments parsed = cli::parseArguments(args, kOptionSpecs);
+  if (!parsed.positional.empty()) {
+    throw cli::UsageError("unexpected argument '" + parsed.positional.front() + "'");
   }
-  if (!has_db || options.db.empty()) throw std::invalid_argument("--db FILE is required");
-  if (!has_patient || options.patient.empty())
-    throw std::invalid_argument("--patient ID is required");
-  if (!has_out || options.out.empty()) throw std::invalid_argument("--out FILE.png is required");
+  SnapshotOptions options;
+  options.db = requiredValue(parsed, "db");
+  options.patient = requiredValue(parsed, "patient");
+  options.out = requiredValue(parsed, "out");
+  options.date = parsed.value("date");
+  options.hidden_categories = splitCategories(parsed.value("hide"));
+  if (parsed.has("size")) readSize(parsed.value("size"), options);
+  if (parsed.has("view")) {
+    const std::string value = parsed.value("view");
+    const auto view = avatar_view::bodyViewFromString(value);
+    if (!view) throw cli::UsageError("--view: front, back, left or right, got '" + value + "'");
+    options.view = *view;
+  }
   return options;
 }
 

@@ -2,7 +2,6 @@
 // anatomy structure codes) as a Bundle, generated from the encoding configuration.
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -10,6 +9,7 @@
 #include "vicc_anatomy_viz/errors.hpp"
 #include "vicc_anatomy_viz/fhir_code_system.hpp"
 #include "vicc_anatomy_viz/patient_status_service.hpp"
+#include "vicc_common/command_line.hpp"
 
 namespace {
 
@@ -18,47 +18,25 @@ constexpr const char* kUsage =
     "  Prints the FHIR R4 CodeSystem resources of the encoding configuration as a Bundle\n"
     "  (to FILE with --out). Exit code 0 on success, 1 on error, 2 on a usage error.\n";
 
-struct UsageError {
-  std::string message;
+namespace cli = vicc_common::cli;
+
+const std::vector<cli::OptionSpec> kOptionSpecs = {
+    {"config", "FILE", "encoding configuration"},
+    {"anatomy", "FILE", "anatomy catalogue"},
+    {"out", "FILE", "write the bundle here instead of standard output"},
 };
-
-/// --option VALUE or --option=VALUE for the three options; anything else is a usage error.
-std::map<std::string, std::string> parseOptions(const std::vector<std::string>& args) {
-  std::map<std::string, std::string> options;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::string name = args[i];
-    std::string value;
-    const auto equals = name.find('=');
-    if (equals != std::string::npos) {
-      value = name.substr(equals + 1);
-      name = name.substr(0, equals);
-    } else if (i + 1 < args.size()) {
-      value = args[++i];
-    } else {
-      throw UsageError{"'" + name + "' needs a value"};
-    }
-    if (name != "--config" && name != "--anatomy" && name != "--out") {
-      throw UsageError{"unknown argument '" + name + "'"};
-    }
-    options[name] = value;
-  }
-  return options;
-}
-
-std::string optionOr(const std::map<std::string, std::string>& options, const std::string& name,
-                     const std::string& fallback) {
-  const auto found = options.find(name);
-  return found == options.end() ? fallback : found->second;
-}
 
 int run(const std::vector<std::string>& args) {
   using namespace vicc_anatomy_viz;
-  const auto options = parseOptions(args);
+  const cli::ParsedArguments options = cli::parseArguments(args, kOptionSpecs);
+  if (!options.positional.empty()) {
+    throw cli::UsageError("unknown argument '" + options.positional.front() + "'");
+  }
   const EncodingModel model =
-      EncodingModel::load(optionOr(options, "--config", defaultEncodingConfigPath()),
-                          optionOr(options, "--anatomy", defaultAnatomyConfigPath()));
+      EncodingModel::load(options.value("config", defaultEncodingConfigPath()),
+                          options.value("anatomy", defaultAnatomyConfigPath()));
   const std::string text = codeSystemResources(model).dump(2) + "\n";
-  const std::string out_path = optionOr(options, "--out", "");
+  const std::string out_path = options.value("out");
   if (out_path.empty()) {
     std::cout << text;
     return 0;
@@ -82,8 +60,8 @@ int main(int argc, char** argv) {
   }
   try {
     return run(args);
-  } catch (const UsageError& e) {
-    std::cerr << "vicc_fhir_codesystem: " << e.message << "\n" << kUsage;
+  } catch (const cli::UsageError& e) {
+    std::cerr << "vicc_fhir_codesystem: " << e.what() << "\n" << kUsage;
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "vicc_fhir_codesystem: " << e.what() << "\n";

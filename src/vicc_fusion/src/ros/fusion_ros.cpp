@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "vicc_common/parameter_names.hpp"
+#include "vicc_common/ros_parameters.hpp"
 #include "vicc_fusion/ros/surfel_cloud.hpp"
 #include "vicc_fusion/surfel_io.hpp"
 #include "vicc_tracking/ros/conversions.hpp"
@@ -11,56 +13,41 @@ namespace vicc_fusion {
 namespace {
 
 constexpr double kWarnPeriod = 5.0;  // s between repeated warnings
-using vicc_tracking::readOptionalParam;
 
 }  // namespace
 
-void FusionRosSettings::validate() const {
-  if (map_frame.empty()) throw std::invalid_argument("fusion: map_frame must not be empty");
-  if (!(publish_rate >= 0.0)) throw std::invalid_argument("fusion: publish_rate must be >= 0");
-  if (pose_queue_size < 1) throw std::invalid_argument("fusion: pose_queue_size must be >= 1");
-}
-
-FusionRosSettings readFusionRosSettings(const ros::NodeHandle& private_nh) {
+FusionRosSettings readFusionRosSettings(const ros::NodeHandle& private_nh,
+                                        std::set<std::string>& read_names) {
   FusionRosSettings settings;
-  readOptionalParam(private_nh, "track", settings.track);
-  readOptionalParam(private_nh, "map_frame", settings.map_frame);
-  readOptionalParam(private_nh, "publish_rate", settings.publish_rate);
-  readOptionalParam(private_nh, "pose_queue_size", settings.pose_queue_size);
-  readOptionalParam(private_nh, "use_intensity", settings.use_intensity);
-  settings.validate();
+  vicc_common::readRosParameters(private_nh, settings, read_names);
   return settings;
 }
 
-FrameToModelConfig readFrameToModelConfig(const ros::NodeHandle& private_nh) {
+FrameToModelConfig readFrameToModelConfig(const ros::NodeHandle& private_nh,
+                                          std::set<std::string>& read_names) {
   FrameToModelConfig config;
-  readOptionalParam(private_nh, "frame_to_model", config.track_against_model);
-  readOptionalParam(private_nh, "min_prediction_coverage", config.min_prediction_coverage);
-  SurfelFusionConfig& fusion = config.fusion;
-  readOptionalParam(private_nh, "fusion/supersampling", fusion.supersampling);
-  readOptionalParam(private_nh, "fusion/max_depth_difference", fusion.max_depth_difference);
-  readOptionalParam(private_nh, "fusion/max_normal_angle_deg", fusion.max_normal_angle_deg);
-  readOptionalParam(private_nh, "fusion/max_radius_growth", fusion.max_radius_growth);
-  readOptionalParam(private_nh, "fusion/confidence_sigma", fusion.confidence_sigma);
-  readOptionalParam(private_nh, "fusion/stable_confidence", fusion.stable_confidence);
-  readOptionalParam(private_nh, "fusion/unstable_lifetime", fusion.unstable_lifetime);
-  readOptionalParam(private_nh, "fusion/free_space_margin", fusion.free_space_margin);
-  readOptionalParam(private_nh, "fusion/max_view_distance", fusion.max_view_distance);
-  readOptionalParam(private_nh, "fusion/max_surfels", fusion.max_surfels);
-  readOptionalParam(private_nh, "fusion/sort_interval", fusion.sort_interval);
-  config.validate();
+  vicc_common::readRosParameters(private_nh, config, read_names);
   return config;
 }
 
+void FusionRos::warnUnknownParameters(const ros::NodeHandle& private_nh) {
+  // The tracker's node settings are known in both modes: track: false loads tracker.yaml too.
+  std::set<std::string> node_keys;
+  vicc_common::collectParameterNames(vicc_tracking::TrackerNodeSettings{}, node_keys);
+  for (const std::string& key : node_keys) parameter_names_.insert(private_nh.resolveName(key));
+  vicc_common::warnUnknownRosParameters(private_nh, parameter_names_);
+}
+
 FusionRos::FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-    : settings_(readFusionRosSettings(private_nh)),
-      model_(readFrameToModelConfig(private_nh)),
+    : settings_(readFusionRosSettings(private_nh, parameter_names_)),
+      model_(readFrameToModelConfig(private_nh, parameter_names_)),
       reconfigure_(std::make_unique<FusionReconfigure>(ros::NodeHandle(private_nh, "fusion"),
                                                        "fusion", model_.config().fusion)) {
   model_pub_ = private_nh.advertise<sensor_msgs::PointCloud2>("model", 1, true);
   save_service_ = private_nh.advertiseService("save_model", &FusionRos::onSaveModel, this);
   vicc_tracking::PreprocessingConfig preprocessing =
-      vicc_tracking::readTrackerConfig(private_nh).preprocessing;
+      vicc_tracking::readTrackerConfig(private_nh, parameter_names_).preprocessing;
+  warnUnknownParameters(private_nh);
   preprocessing.pyramid_levels = 1;
   if (!settings_.track || settings_.use_intensity) {
     preprocessor_ = std::make_unique<vicc_tracking::DepthPreprocessor>(preprocessing);
@@ -71,7 +58,8 @@ FusionRos::FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
     ROS_INFO("fusion: surfel intensity from %s", intensity_sub_.getTopic().c_str());
   }
   if (settings_.track) {
-    tracker_ = std::make_unique<vicc_tracking::TrackerRos>(nh, private_nh);
+    tracker_ = std::make_unique<vicc_tracking::TrackerRos>(
+        nh, private_nh, vicc_tracking::TrackerRos::UnknownParameters::kLeaveToOwner);
     frame_id_ = tracker_->settings().map_frame;
     tracker_->setFrameHook(
         [this](vicc_tracking::Tracker& tracker, const vicc_tracking::FrameReport& report,

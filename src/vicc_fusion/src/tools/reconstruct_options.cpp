@@ -1,21 +1,55 @@
 #include "reconstruct_options.hpp"
 
-#include <cstdlib>
-#include <optional>
-#include <stdexcept>
+#include <algorithm>
 
-#include "vicc_tracking/tracker_config_yaml.hpp"
+#include "vicc_common/command_line.hpp"
+#include "vicc_fusion/fusion_config_yaml.hpp"
 
 namespace vicc_fusion {
 namespace {
 
-int parsePositiveInt(const std::string& option, const std::string& text) {
-  char* end = nullptr;
-  const long value = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || value < 1 || value > 1000000) {
-    throw std::invalid_argument(option + " needs a positive integer, got '" + text + "'");
+namespace cli = vicc_common::cli;
+
+const std::vector<cli::OptionSpec> kOptionSpecs = {
+    {"help", "", ""},        {"depth-topic", "T", ""},     {"info-topic", "T", ""},
+    {"imu-topic", "T", ""},  {"intensity-topic", "T", ""}, {"init", "STRATEGY", ""},
+    {"levels", "N", ""},     {"config", "FILE", ""},       {"imu-noise", "FILE", ""},
+    {"frame-step", "N", ""}, {"trajectory", "OUT", ""},    {"cloud", "OUT", ""},
+    {"mesh", "OUT", ""},     {"frame-to-frame", "", ""},   {"no-fusion", "", ""},
+    {"report", "OUT", ""},   {"gt", "TRUTH", ""},          {"truth-surface", "SURFACE", ""},
+    {"quiet", "", ""},
+};
+
+/// The --config files in order, then the command line's overrides; the IMU noise file (from a
+/// file or --imu-noise) is applied once, after everything that could set the EKF's noise.
+void readParameters(const cli::ParsedArguments& parsed, ReconstructOptions& options) {
+  FusionParameterSet parameters;
+  options.config_paths = parsed.all("config");
+  for (const std::string& path : options.config_paths) loadFusionParameters(path, parameters);
+  options.tracker = parameters.tracker.tracker;
+  options.model = parameters.model;
+  if (parsed.has("init")) {
+    options.tracker.init_strategy = vicc_tracking::initStrategyFromString(parsed.value("init"));
   }
-  return static_cast<int>(value);
+  options.tracker.preprocessing.pyramid_levels =
+      parsed.integer("levels", options.tracker.preprocessing.pyramid_levels, 1, 3);
+  if (parsed.has("imu-noise")) options.tracker.ekf.imu_noise_file = parsed.value("imu-noise");
+  vicc_tracking::applyImuNoiseFile(options.tracker);
+  options.init = options.tracker.init_strategy;
+  options.levels = options.tracker.preprocessing.pyramid_levels;
+}
+
+void checkCombinations(const ReconstructOptions& options) {
+  if (!options.fusion && (!options.cloud_path.empty() || !options.mesh_path.empty() ||
+                          !options.truth_surface_path.empty())) {
+    throw cli::UsageError("--cloud, --mesh and --truth-surface need the model: drop --no-fusion");
+  }
+  if (!options.fusion && !options.intensity_topic.empty() && options.intensity_topic != "none") {
+    throw cli::UsageError("--intensity-topic needs the model: drop --no-fusion");
+  }
+  if (!options.truth_surface_path.empty() && options.ground_truth_path.empty()) {
+    throw cli::UsageError("--truth-surface needs --gt (to place the model in the truth's frame)");
+  }
 }
 
 }  // namespace
@@ -27,7 +61,7 @@ void printReconstructUsage(std::ostream& out) {
          "                        [--frame-step N] [--trajectory OUT.tum] [--cloud OUT.ply]\n"
          "                        [--mesh OUT.ply] [--report OUT.json] [--gt TRUTH.tum]\n"
          "                        [--truth-surface SURFACE.ply] [--frame-to-frame | --no-fusion]\n"
-         "                        [--config TRACKER.yaml] [--imu-noise IMU.yaml] [--quiet]\n"
+         "                        [--config PARAMS.yaml ...] [--imu-noise IMU.yaml] [--quiet]\n"
          "Tracks the depth camera through a depth + IMU recording (thesis 5.4) and fuses the\n"
          "frames into a surfel model it tracks against (frame-to-model, thesis 2.2.2, 5.3).\n"
          "  topics       default to the only Image / CameraInfo / Imu topic in the bag\n"
@@ -37,10 +71,13 @@ void printReconstructUsage(std::ostream& out) {
          "  --init       ICP initial guess: ekf (default, the thesis), identity (KinectFusion),\n"
          "               constant_velocity, imu (plain IMU integration); overrides --config\n"
          "  --levels     image pyramid levels for ICP (default 3); overrides --config\n"
-         "  --config     tracker parameters in the tracker node's layout (config/tracker.yaml:\n"
-         "               init_strategy, preprocessing, icp, ekf, still_phase, imu_sync); keys\n"
-         "               left out keep their defaults, unknown keys and wrong types are errors,\n"
-         "               the node-only keys (map_frame, publish_tf, ...) are accepted, unused\n"
+         "  --config     parameters in the nodes' layout, repeatable, applied in order: the\n"
+         "               tracker's (vicc_tracking config/tracker.yaml: init_strategy,\n"
+         "               preprocessing, icp, ekf, still_phase, imu_sync) and the fusion's\n"
+         "               (vicc_fusion config/fusion.yaml: frame_to_model,\n"
+         "               min_prediction_coverage, fusion, prediction); keys left out keep their\n"
+         "               defaults, unknown keys and wrong types are errors, the node-only keys\n"
+         "               (map_frame, publish_tf, track, publish_rate, ...) are accepted, unused\n"
          "  --imu-noise  the IMU's noise figures in Kalibr's imu.yaml layout (noise densities,\n"
          "               random walks, update_rate): the EKF's process noise is derived from\n"
          "               them (vicc_tracking docs/imu_noise.md); overrides ekf/imu_noise_file\n"
@@ -62,91 +99,41 @@ void printReconstructUsage(std::ostream& out) {
 
 bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptions& options,
                              std::ostream& out) {
-  std::optional<vicc_tracking::InitStrategyType> init;
-  std::optional<int> levels;
-  std::optional<std::string> imu_noise;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
-      return argv[++i];
-    };
-    if (arg == "-h" || arg == "--help") {
-      printReconstructUsage(out);
-      return false;
-    } else if (arg == "--depth-topic") {
-      options.depth_topic = value();
-    } else if (arg == "--info-topic") {
-      options.info_topic = value();
-    } else if (arg == "--imu-topic") {
-      options.imu_topic = value();
-    } else if (arg == "--intensity-topic") {
-      options.intensity_topic = value();
-      if (options.intensity_topic.empty()) {
-        throw std::invalid_argument("--intensity-topic needs a topic or 'none'");
-      }
-    } else if (arg == "--init") {
-      init = vicc_tracking::initStrategyFromString(value());
-    } else if (arg == "--levels") {
-      levels = parsePositiveInt(arg, value());
-      if (*levels > 3) throw std::invalid_argument("--levels must be 1, 2 or 3");
-    } else if (arg == "--config") {
-      options.config_path = value();
-    } else if (arg == "--imu-noise") {
-      imu_noise = value();
-    } else if (arg == "--frame-step") {
-      options.frame_step = parsePositiveInt(arg, value());
-    } else if (arg == "--trajectory") {
-      options.trajectory_path = value();
-    } else if (arg == "--cloud") {
-      options.cloud_path = value();
-    } else if (arg == "--mesh") {
-      options.mesh_path = value();
-    } else if (arg == "--frame-to-frame") {
-      options.frame_to_model = false;
-    } else if (arg == "--no-fusion") {
-      options.fusion = false;
-      options.frame_to_model = false;
-    } else if (arg == "--report") {
-      options.report_path = value();
-    } else if (arg == "--gt") {
-      options.ground_truth_path = value();
-    } else if (arg == "--truth-surface") {
-      options.truth_surface_path = value();
-    } else if (arg == "--quiet") {
-      options.quiet = true;
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw std::invalid_argument("unknown option " + arg);
-    } else if (options.bag_path.empty()) {
-      options.bag_path = arg;
-    } else {
-      throw std::invalid_argument("more than one bag given: " + arg);
-    }
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (std::find(args.begin(), args.end(), "-h") != args.end()) {
+    printReconstructUsage(out);
+    return false;
   }
-  if (options.bag_path.empty()) throw std::invalid_argument("no bag given");
-  options.tracker = options.config_path.empty()
-                        ? vicc_tracking::TrackerConfig{}
-                        : vicc_tracking::loadTrackerParameters(options.config_path).tracker;
-  if (init) options.tracker.init_strategy = *init;
-  if (levels) options.tracker.preprocessing.pyramid_levels = *levels;
-  if (imu_noise) {
-    options.tracker.ekf.imu_noise_file = *imu_noise;
-    vicc_tracking::applyImuNoiseFile(options.tracker);
+  const cli::ParsedArguments parsed = cli::parseArguments(args, kOptionSpecs);
+  if (parsed.flag("help")) {
+    printReconstructUsage(out);
+    return false;
   }
-  options.init = options.tracker.init_strategy;
-  options.levels = options.tracker.preprocessing.pyramid_levels;
-  if (!options.fusion && (!options.cloud_path.empty() || !options.mesh_path.empty() ||
-                          !options.truth_surface_path.empty())) {
-    throw std::invalid_argument(
-        "--cloud, --mesh and --truth-surface need the model: drop --no-fusion");
+  if (parsed.positional.empty()) throw cli::UsageError("no bag given");
+  if (parsed.positional.size() > 1) {
+    throw cli::UsageError("more than one bag given: " + parsed.positional[1]);
   }
-  if (!options.fusion && !options.intensity_topic.empty() && options.intensity_topic != "none") {
-    throw std::invalid_argument("--intensity-topic needs the model: drop --no-fusion");
+  options.bag_path = parsed.positional.front();
+  options.depth_topic = parsed.value("depth-topic");
+  options.info_topic = parsed.value("info-topic");
+  options.imu_topic = parsed.value("imu-topic");
+  options.intensity_topic = parsed.value("intensity-topic");
+  if (parsed.has("intensity-topic") && options.intensity_topic.empty()) {
+    throw cli::UsageError("--intensity-topic needs a topic or 'none'");
   }
-  if (!options.truth_surface_path.empty() && options.ground_truth_path.empty()) {
-    throw std::invalid_argument(
-        "--truth-surface needs --gt (to place the model in the truth's frame)");
-  }
+  options.frame_step = parsed.integer("frame-step", options.frame_step, 1, 1000000);
+  options.trajectory_path = parsed.value("trajectory");
+  options.cloud_path = parsed.value("cloud");
+  options.mesh_path = parsed.value("mesh");
+  options.report_path = parsed.value("report");
+  options.ground_truth_path = parsed.value("gt");
+  options.truth_surface_path = parsed.value("truth-surface");
+  options.quiet = parsed.flag("quiet");
+  readParameters(parsed, options);
+  options.fusion = !parsed.flag("no-fusion");
+  if (parsed.flag("frame-to-frame") || !options.fusion) options.model.track_against_model = false;
+  options.frame_to_model = options.model.track_against_model;
+  checkCombinations(options);
   return true;
 }
 

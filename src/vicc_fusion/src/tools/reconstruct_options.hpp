@@ -3,7 +3,9 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
+#include "vicc_fusion/frame_to_model.hpp"
 #include "vicc_tracking/tracker.hpp"
 
 namespace vicc_fusion {
@@ -16,10 +18,12 @@ struct ReconstructOptions {
   /// The gray (amplitude) image fused as the surfels' intensity. Empty: the only mono8/mono16
   /// Image topic besides the depth, if there is exactly one; "none": no intensity.
   std::string intensity_topic;
-  /// The tracker's parameters: the defaults, or --config FILE.yaml (the tracker node's
-  /// layout, config/tracker.yaml). --init and --levels override the file.
-  std::string config_path;
+  /// --config FILE.yaml, repeatable, applied in order: the tracker node's layout
+  /// (config/tracker.yaml), the fusion node's (config/fusion.yaml) or both merged (the fusion
+  /// node's namespace). --init, --levels, --frame-to-frame and --no-fusion override them.
+  std::vector<std::string> config_paths;
   vicc_tracking::TrackerConfig tracker;
+  FrameToModelConfig model;  ///< fusion/*, prediction/*, frame_to_model, min_prediction_coverage
   vicc_tracking::InitStrategyType init = vicc_tracking::InitStrategyType::kEkf;  ///< = tracker's
   int levels = 3;  ///< = tracker.preprocessing.pyramid_levels
   int frame_step = 1;
@@ -35,7 +39,8 @@ struct ReconstructOptions {
   bool quiet = false;              ///< no progress line
 };
 
-/// Throws std::invalid_argument with a message for the user on bad arguments.
+/// Throws std::invalid_argument (vicc_common::cli::UsageError for the command line itself)
+/// with a message for the user on bad arguments.
 /// Returns false when --help was given (usage printed to `out`).
 bool parseReconstructOptions(int argc, const char* const* argv, ReconstructOptions& options,
                              std::ostream& out);

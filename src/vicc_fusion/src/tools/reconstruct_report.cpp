@@ -1,5 +1,7 @@
 #include "reconstruct_report.hpp"
 
+#include "vicc_common/json_parameters.hpp"
+#include "vicc_fusion/fusion_parameters.hpp"
 #include "vicc_tracking/tracker_parameters.hpp"
 
 namespace vicc_fusion {
@@ -8,27 +10,6 @@ namespace {
 nlohmann::json meanStd(const vicc_tracking::SampleSummary& summary) {
   return {{"mean", summary.mean}, {"std", summary.stddev}, {"count", summary.count}};
 }
-
-/// The tracker's parameters as JSON, through the same tables as the YAML and ROS readers.
-class JsonWriter {
- public:
-  explicit JsonWriter(nlohmann::json& out) : out_(out) {}
-  template <typename T>
-  void operator()(const char* key, const T& value) {
-    out_[key] = value;
-  }
-  void operator()(const char* key, const vicc_tracking::InitStrategyType& value) {
-    out_[key] = vicc_tracking::toString(value);
-  }
-  template <typename Config>
-  void section(const char* key, const Config& config) {
-    JsonWriter writer(out_[key]);
-    vicc_tracking::visitParameters(config, writer);
-  }
-
- private:
-  nlohmann::json& out_;
-};
 
 }  // namespace
 
@@ -76,9 +57,14 @@ nlohmann::json makeReport(const ReconstructOptions& options, const ReconstructRu
   if (!options.cloud_path.empty()) report["cloud_points"] = run.cloud_points;
   if (!options.mesh_path.empty()) report["mesh_triangles"] = run.mesh_triangles;
   report["settings"]["fusion"] = options.fusion;
-  report["settings"]["config"] = options.config_path;
-  JsonWriter tracker_writer(report["tracker_parameters"]);
-  vicc_tracking::visitParameters(options.tracker, tracker_writer);
+  std::string config_files;  // one string as before a second --config was possible
+  for (const std::string& path : options.config_paths) {
+    config_files += (config_files.empty() ? "" : ", ") + path;
+  }
+  report["settings"]["config"] = config_files;
+  report["settings"]["config_files"] = options.config_paths;
+  vicc_common::writeJsonParameters(options.tracker, report["tracker_parameters"]);
+  if (options.fusion) vicc_common::writeJsonParameters(options.model, report["fusion_parameters"]);
   report["settings"]["tracking"] = options.frame_to_model ? "frame_to_model" : "frame_to_frame";
   if (run.fusion) {
     const ReconstructRun::Fusion& fusion = *run.fusion;

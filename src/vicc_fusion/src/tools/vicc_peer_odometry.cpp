@@ -8,12 +8,14 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 #include <opencv2/core/eigen.hpp>  // after Eigen, as OpenCV requires
 #include <opencv2/rgbd.hpp>
 
+#include "vicc_common/command_line.hpp"
 #include "vicc_tracking/depth_preprocessing.hpp"
 #include "vicc_tracking/ros/conversions.hpp"
 #include "vicc_tracking/ros/rig_bag.hpp"
@@ -30,32 +32,22 @@ struct Options {
   std::string report;
 };
 
+namespace cli = vicc_common::cli;
+
+/// Throws cli::UsageError naming the option.
 Options parse(int argc, char** argv) {
+  const cli::ParsedArguments parsed = cli::parseArguments(
+      std::vector<std::string>(argv + 1, argv + argc), {{"frame-step", "N", ""},
+                                                        {"levels", "N", ""},
+                                                        {"gt", "TRUTH.tum", ""},
+                                                        {"report", "OUT.json", ""}});
+  if (parsed.positional.size() != 1) throw cli::UsageError("give exactly one bag");
   Options options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
-      return argv[++i];
-    };
-    if (arg == "--frame-step") {
-      options.frame_step = std::atoi(value().c_str());
-    } else if (arg == "--levels") {
-      options.levels = std::atoi(value().c_str());
-    } else if (arg == "--gt") {
-      options.ground_truth = value();
-    } else if (arg == "--report") {
-      options.report = value();
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw std::invalid_argument("unknown option " + arg);
-    } else {
-      options.bag = arg;
-    }
-  }
-  if (options.bag.empty()) throw std::invalid_argument("no bag given");
-  if (options.frame_step < 1) throw std::invalid_argument("--frame-step must be >= 1");
-  if (options.levels < 1 || options.levels > 3)
-    throw std::invalid_argument("--levels must be 1..3");
+  options.bag = parsed.positional.front();
+  options.frame_step = parsed.integer("frame-step", options.frame_step, 1, 1000000);
+  options.levels = parsed.integer("levels", options.levels, 1, 3);
+  options.ground_truth = parsed.value("gt");
+  options.report = parsed.value("report");
   return options;
 }
 

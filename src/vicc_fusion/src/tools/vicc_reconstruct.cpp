@@ -51,9 +51,7 @@ class Reconstruction {
     }
     tracker_ = std::make_unique<vicc_tracking::Tracker>(config_, imu_to_camera);
     if (options.fusion) {
-      vicc_fusion::FrameToModelConfig fusion_config;
-      fusion_config.track_against_model = options.frame_to_model;
-      model_ = std::make_unique<vicc_fusion::FrameToModel>(fusion_config);
+      model_ = std::make_unique<vicc_fusion::FrameToModel>(options.model);
       run_.fusion.emplace();
     }
   }

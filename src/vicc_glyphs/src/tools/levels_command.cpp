@@ -5,7 +5,6 @@
 
 #include "command_line.hpp"
 #include "model_path.hpp"
-#include "number_option.hpp"
 #include "vicc_glyphs/perception/perception_model_yaml.hpp"
 
 namespace vicc_glyphs::tools {

@@ -4,9 +4,9 @@
 // place only: the ROS parameter reader (ros/parameters.hpp), the YAML file reader
 // (tracker_config_yaml.hpp, used by the offline tools) and the YAML/JSON writers.
 //
-// A visitor is called as
+// The readers and writers are vicc_common's (parameter_types.hpp describes the visitor):
 //   visitor(key, field)               for a value: int, double, bool, std::string,
-//                                     std::vector<int> or InitStrategyType
+//                                     std::vector<int> or InitStrategyType (stored as text)
 //   visitor.section(key, sub_config)  for a nested section; the visitor goes on with
 //                                     visitParameters(sub_config, ...)
 // Config may be const (writers) or not (readers). Keys follow config/tracker.yaml.
@@ -36,6 +36,12 @@ struct TrackerNodeSettings {
   std::string initial_pose_frame;
   void validate() const;
 };
+
+/// InitStrategyType is stored as its name ("ekf", "constant_velocity", ...).
+inline std::string toParameterText(InitStrategyType type) { return toString(type); }
+inline void fromParameterText(const std::string& text, InitStrategyType& type) {
+  type = initStrategyFromString(text);
+}
 
 template <typename Config, typename Type>
 using EnableForConfig = std::enable_if_t<std::is_same_v<std::remove_const_t<Config>, Type>>;

@@ -2,23 +2,33 @@
 // scenario's frame rate, and the ground-truth camera pose on tf (map -> <camera frame>_gt).
 // Runs as its own process, like the real driver; imu_publisher shares its time base (see
 // rig_clock.hpp).
+#include <set>
+#include <string>
+
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 #include <tf2_ros/transform_broadcaster.h>
 
+#include "vicc_common/ros_parameters.hpp"
 #include "vicc_tracking/ros/rig_clock.hpp"
 #include "vicc_tracking/ros/rig_messages.hpp"
+#include "vicc_tracking/sim/driver_settings.hpp"
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "depth_publisher");
   ros::NodeHandle nh;
   ros::NodeHandle private_nh("~");
   try {
-    const vicc_tracking::sim::RigSimulator rig(vicc_tracking::loadScenarioParam(private_nh));
-    const bool loop = private_nh.param("loop", false);
-    const bool publish_ground_truth = private_nh.param("publish_ground_truth", true);
+    vicc_tracking::sim::DepthDriverSettings settings;
+    std::set<std::string> read_names;
+    vicc_common::readRosParameters(private_nh, settings, read_names);
+    vicc_common::warnUnknownRosParameters(private_nh, read_names);
+    const bool loop = settings.driver.loop;
+    const bool publish_ground_truth = settings.publish_ground_truth;
+    const vicc_tracking::sim::RigSimulator rig(
+        vicc_tracking::sim::loadScenario(settings.driver.scenario));
     ros::Publisher depth_pub =
         nh.advertise<sensor_msgs::Image>(vicc_tracking::RigTopics::kDepth, 5);
     ros::Publisher gray_pub = nh.advertise<sensor_msgs::Image>(vicc_tracking::RigTopics::kGray, 5);

@@ -1,19 +1,28 @@
 // Simulated IMU driver: sensor_msgs/Imu (REP-145 raw: rad/s, specific force incl. gravity,
 // no orientation) in imu_link, and the IMU -> camera extrinsic on /tf_static.
+#include <set>
+#include <string>
+
 #include <ros/ros.h>
 #include <sensor_msgs/Imu.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 
+#include "vicc_common/ros_parameters.hpp"
 #include "vicc_tracking/ros/rig_clock.hpp"
 #include "vicc_tracking/ros/rig_messages.hpp"
+#include "vicc_tracking/sim/driver_settings.hpp"
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "imu_publisher");
   ros::NodeHandle nh;
   ros::NodeHandle private_nh("~");
   try {
-    const vicc_tracking::sim::RigSimulator rig(vicc_tracking::loadScenarioParam(private_nh));
-    const bool loop = private_nh.param("loop", false);
+    vicc_tracking::sim::DriverSettings settings;
+    std::set<std::string> read_names;
+    vicc_common::readRosParameters(private_nh, settings, read_names);
+    vicc_common::warnUnknownRosParameters(private_nh, read_names);
+    const bool loop = settings.loop;
+    const vicc_tracking::sim::RigSimulator rig(vicc_tracking::sim::loadScenario(settings.scenario));
     ros::Publisher imu_pub = nh.advertise<sensor_msgs::Imu>(vicc_tracking::RigTopics::kImu, 400);
     tf2_ros::StaticTransformBroadcaster static_broadcaster;
     const ros::Time t0 = vicc_tracking::negotiateRigStartTime(nh);

@@ -1,7 +1,6 @@
 #include "vicc_tracking/ros/rig_clock.hpp"
 
 #include <cmath>
-#include <stdexcept>
 
 #include <ros/console.h>
 
@@ -21,15 +20,6 @@ ros::Time negotiateRigStartTime(ros::NodeHandle& nh) {
     nh.getParam(kStartParam, t0);
   }
   return ros::Time(t0);
-}
-
-sim::Scenario loadScenarioParam(const ros::NodeHandle& private_nh) {
-  std::string scenario;
-  if (!private_nh.getParam("scenario", scenario) || scenario.empty()) {
-    throw std::runtime_error("parameter " + private_nh.resolveName("scenario") +
-                             " is required (a scenario name such as 'hen' or a YAML file)");
-  }
-  return sim::loadScenario(scenario);
 }
 
 double loopPeriod(const sim::RigSimulator& rig) {

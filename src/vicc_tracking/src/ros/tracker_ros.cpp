@@ -3,6 +3,7 @@
 #include <nav_msgs/Odometry.h>
 #include <vicc_msgs/TrackingStatus.h>
 
+#include "vicc_common/ros_parameters.hpp"
 #include "vicc_tracking/ros/conversions.hpp"
 #include "vicc_tracking/ros/parameters.hpp"
 #include "vicc_tracking/ros/status_message.hpp"
@@ -13,11 +14,15 @@ namespace {
 constexpr double kWarnPeriod = 5.0;  // s between repeats of the same warning
 }
 
-TrackerRos::TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
-    : config_(readTrackerConfig(private_nh)),
-      settings_(readTrackerNodeSettings(private_nh)),
+TrackerRos::TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
+                       UnknownParameters unknown_parameters)
+    : config_(readTrackerConfig(private_nh, parameter_names_)),
+      settings_(readTrackerNodeSettings(private_nh, parameter_names_)),
       reconfigure_(std::make_unique<TrackerReconfigure>(private_nh, config_)),
       tf_listener_(tf_buffer_, nh) {
+  if (unknown_parameters == UnknownParameters::kWarn) {
+    vicc_common::warnUnknownRosParameters(private_nh, parameter_names_);
+  }
   odom_pub_ = private_nh.advertise<nav_msgs::Odometry>("odom", 10);
   path_pub_ = private_nh.advertise<nav_msgs::Path>("path", 1, true);
   status_pub_ = private_nh.advertise<vicc_msgs::TrackingStatus>("status", 50);

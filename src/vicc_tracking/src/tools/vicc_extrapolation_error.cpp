@@ -8,21 +8,22 @@
 #include <string>
 #include <vector>
 
+#include "vicc_common/command_line.hpp"
 #include "vicc_tracking/sim/extrapolation_error.hpp"
 #include "vicc_tracking/sim/scenario.hpp"
 
 namespace {
 
+namespace cli = vicc_common::cli;
+
+constexpr const char* kUsage = "usage: vicc_extrapolation_error SCENARIO... [--steps 1,2,4]";
+
 std::vector<int> parseSteps(const std::string& text) {
   std::vector<int> steps;
   std::stringstream in(text);
   std::string item;
-  while (std::getline(in, item, ',')) {
-    size_t used = 0;
-    const int step = std::stoi(item, &used);
-    if (used != item.size() || step < 1) throw std::invalid_argument("bad --steps entry " + item);
-    steps.push_back(step);
-  }
+  while (std::getline(in, item, ',')) steps.push_back(cli::parseInteger("steps", item, 1, 1000));
+  if (steps.empty()) throw cli::UsageError("--steps needs at least one frame step");
   return steps;
 }
 
@@ -32,17 +33,16 @@ int main(int argc, char** argv) {
   std::vector<std::string> scenarios;
   std::vector<int> steps = {1, 2, 4};
   try {
-    for (int i = 1; i < argc; ++i) {
-      const std::string arg = argv[i];
-      if (arg == "--steps" && i + 1 < argc) {
-        steps = parseSteps(argv[++i]);
-      } else if (arg.empty() || arg[0] == '-') {
-        throw std::invalid_argument("usage: vicc_extrapolation_error SCENARIO... [--steps 1,2,4]");
-      } else {
-        scenarios.push_back(arg);
-      }
-    }
-    if (scenarios.empty()) throw std::invalid_argument("no scenario given");
+    const cli::ParsedArguments parsed = cli::parseArguments(
+        std::vector<std::string>(argv + 1, argv + argc), {{"steps", "N,...", ""}});
+    scenarios = parsed.positional;
+    if (parsed.has("steps")) steps = parseSteps(parsed.value("steps"));
+    if (scenarios.empty()) throw cli::UsageError("no scenario given");
+  } catch (const cli::UsageError& error) {
+    std::cerr << "vicc_extrapolation_error: " << error.what() << "\n" << kUsage << "\n";
+    return 2;
+  }
+  try {
     std::printf("| scenario | step | interval s | R_q | R_v | R_p |\n|---|---|---|---|---|---|\n");
     for (const std::string& name : scenarios) {
       const vicc_tracking::sim::RigSimulator rig(vicc_tracking::sim::loadScenario(name));
@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
     }
   } catch (const std::exception& error) {
     std::cerr << "vicc_extrapolation_error: " << error.what() << "\n";
-    return 2;
+    return 1;
   }
   return 0;
 }

@@ -3,14 +3,16 @@
 // as fast as the renderer allows.
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <rosbag/bag.h>
 #include <tf2_msgs/TFMessage.h>
 #include <boost/make_shared.hpp>
 
+#include "vicc_common/command_line.hpp"
 #include "vicc_tracking/ros/rig_messages.hpp"
 #include "vicc_tracking/sim/visible_surface.hpp"
 #include "vicc_tracking/tum_trajectory.hpp"
@@ -39,40 +41,29 @@ struct Options {
   double start_time = 1700000000.0;
 };
 
-Options parseOptions(int argc, char** argv) {
-  Options options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::runtime_error(arg + " needs a value");
-      return argv[++i];
-    };
-    if (arg == "--out") {
-      options.bag_path = value();
-    } else if (arg == "--gt") {
-      options.gt_path = value();
-    } else if (arg == "--surface") {
-      options.surface_path = value();
-    } else if (arg == "--start-time") {
-      const std::string text = value();
-      char* end = nullptr;
-      options.start_time = std::strtod(text.c_str(), &end);
-      if (*end != '\0' || !(options.start_time > 0.0)) {
-        throw std::runtime_error("--start-time must be a positive number of seconds");
-      }
-    } else if (arg == "-h" || arg == "--help") {
-      printUsage(std::cout);
-      std::exit(0);
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw std::runtime_error("unknown option " + arg);
-    } else if (options.scenario.empty()) {
-      options.scenario = arg;
-    } else {
-      throw std::runtime_error("more than one scenario given: " + arg);
-    }
+namespace cli = vicc_common::cli;
+
+const std::vector<cli::OptionSpec> kOptionSpecs = {
+    {"out", "FILE.bag", ""},   {"gt", "FILE.tum", ""}, {"surface", "FILE.ply", ""},
+    {"start-time", "SEC", ""}, {"help", "", ""},
+};
+
+/// Throws cli::UsageError; std::nullopt for --help.
+std::optional<Options> parseOptions(const std::vector<std::string>& args) {
+  const cli::ParsedArguments parsed = cli::parseArguments(args, kOptionSpecs);
+  if (parsed.flag("help")) return std::nullopt;
+  if (parsed.positional.empty()) throw cli::UsageError("no scenario given");
+  if (parsed.positional.size() > 1) {
+    throw cli::UsageError("more than one scenario given: " + parsed.positional[1]);
   }
-  if (options.scenario.empty()) throw std::runtime_error("no scenario given");
-  if (options.bag_path.empty()) throw std::runtime_error("--out FILE.bag is required");
+  Options options;
+  options.scenario = parsed.positional.front();
+  options.bag_path = parsed.value("out");
+  if (options.bag_path.empty()) throw cli::UsageError("--out FILE.bag is required");
+  options.gt_path = parsed.value("gt");
+  options.surface_path = parsed.value("surface");
+  // Any time ros::Time can hold (unsigned 32-bit seconds), from the first second on.
+  options.start_time = parsed.number("start-time", options.start_time, 1.0, 4294967295.0);
   return options;
 }
 
@@ -92,10 +83,17 @@ boost::shared_ptr<ros::M_string> latchedHeader() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  std::replace(args.begin(), args.end(), std::string("-h"), std::string("--help"));
   Options options;
   try {
-    options = parseOptions(argc, argv);
-  } catch (const std::exception& error) {
+    const std::optional<Options> parsed = parseOptions(args);
+    if (!parsed) {
+      printUsage(std::cout);
+      return 0;
+    }
+    options = *parsed;
+  } catch (const cli::UsageError& error) {
     std::cerr << "vicc_make_bag: " << error.what() << "\n";
     printUsage(std::cerr);
     return 2;

@@ -17,12 +17,15 @@
 #include <vicc_msgs/SelectPatient.h>
 
 #include "vicc_anatomy_viz/patient_status_service.hpp"
+#include "vicc_anatomy_viz/ros/patient_status_server_settings.hpp"
 
 namespace vicc_anatomy_viz::ros_adapter {
 
-/// Parameters: ~db, ~encoding_config, ~anatomy_config, ~view, ~busy_timeout_ms, and an
-/// optional initial selection ~patient / ~date.
-PatientStatusConfig readServerConfig(const ros::NodeHandle& private_nh);
+/// Parameters (the table of patient_status_server_settings.hpp): ~db, ~encoding_config,
+/// ~anatomy_config, ~view, ~busy_timeout_ms, ~max_future_s, and an optional initial selection
+/// ~patient / ~date. A wrong type or an invalid value throws std::invalid_argument naming the
+/// parameter; unknown parameters in the node's namespace are named in a warning.
+PatientStatusServerSettings readServerSettings(const ros::NodeHandle& private_nh);
 
 class PatientStatusServer {
  public:

@@ -12,6 +12,8 @@
 #include <deque>
 #include <memory>
 #include <optional>
+#include <set>
+#include <string>
 
 #include <message_filters/subscriber.h>
 #include <ros/ros.h>
@@ -24,28 +26,20 @@
 
 #include "vicc_fusion/frame_to_model.hpp"
 #include "vicc_fusion/ros/fusion_reconfigure.hpp"
+#include "vicc_fusion/fusion_parameters.hpp"
 #include "vicc_tracking/ros/tracker_ros.hpp"
 
 namespace vicc_fusion {
 
-struct FusionRosSettings {
-  bool track = true;
-  std::string map_frame = "map";  ///< track: false only; with track: true the tracker's
-  double publish_rate = 1.0;      ///< Hz of ~model; 0 = never
-  /// track: false: depth frames held until the external tracker's pose for their stamp is on
-  /// tf (tf2_ros::MessageFilter, never blocking the callbacks); the oldest go first.
-  int pose_queue_size = 10;
-  /// Fuse the gray image of `intensity/image` (mono8/mono16/32FC1, the sensor's grid) as surfel
-  /// intensity: each depth frame takes the gray image with its exact stamp, if it arrived.
-  bool use_intensity = false;
-  void validate() const;
-};
-
-/// Private parameters: track, map_frame, publish_rate, pose_queue_size, use_intensity,
-/// frame_to_model,
-/// min_prediction_coverage and fusion/* (the SurfelFusionConfig fields).
-FusionRosSettings readFusionRosSettings(const ros::NodeHandle& private_nh);
-FrameToModelConfig readFrameToModelConfig(const ros::NodeHandle& private_nh);
+/// Private parameters (the tables of fusion_parameters.hpp, config/fusion.yaml): track,
+/// map_frame, publish_rate, pose_queue_size, use_intensity, frame_to_model,
+/// min_prediction_coverage, fusion/* (SurfelFusionConfig) and prediction/*
+/// (ModelPredictionConfig). Wrong types and invalid values throw naming the parameter; the
+/// names read are added to `read_names`.
+FusionRosSettings readFusionRosSettings(const ros::NodeHandle& private_nh,
+                                        std::set<std::string>& read_names);
+FrameToModelConfig readFrameToModelConfig(const ros::NodeHandle& private_nh,
+                                          std::set<std::string>& read_names);
 
 class FusionRos {
  public:
@@ -53,6 +47,8 @@ class FusionRos {
   FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
 
  private:
+  /// Warns about private parameters neither the fusion's nor the tracker's tables know.
+  void warnUnknownParameters(const ros::NodeHandle& private_nh);
   void onTrackedFrame(vicc_tracking::Tracker& tracker, const vicc_tracking::FrameReport& report,
                       const sensor_msgs::Image& depth, const Eigen::Isometry3d& map_alignment);
   void onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info);
@@ -65,6 +61,7 @@ class FusionRos {
   bool onSaveModel(vicc_msgs::SaveModel::Request& request,
                    vicc_msgs::SaveModel::Response& response);
 
+  std::set<std::string> parameter_names_;  // every parameter read in the private namespace
   FusionRosSettings settings_;
   FrameToModel model_;
   std::unique_ptr<FusionReconfigure> reconfigure_;  ///< ~fusion thresholds while running

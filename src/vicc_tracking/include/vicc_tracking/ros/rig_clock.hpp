@@ -15,10 +15,6 @@ namespace vicc_tracking {
 /// otherwise a new one (next full second + 1 s) that the other publisher then reads.
 ros::Time negotiateRigStartTime(ros::NodeHandle& nh);
 
-/// Loads the scenario named by ~scenario (a name such as "hen" or a YAML path).
-/// Throws std::runtime_error with a clear message if it is missing or invalid.
-sim::Scenario loadScenarioParam(const ros::NodeHandle& private_nh);
-
 /// Period of a looped run: the trajectory closes its loop and is still at both ends, so
 /// repeating it is continuous.
 double loopPeriod(const sim::RigSimulator& rig);

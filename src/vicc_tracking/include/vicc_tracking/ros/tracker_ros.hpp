@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
 #include <nav_msgs/Path.h>
@@ -27,8 +28,13 @@ class TrackerReconfigure;
 
 class TrackerRos {
  public:
+  /// Who warns about parameters in the private namespace that no table knows: the tracker
+  /// itself, or the node that embeds it and reads more parameters there (parameterNames()).
+  enum class UnknownParameters { kWarn, kLeaveToOwner };
+
   /// Throws std::invalid_argument when a parameter is invalid.
-  TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+  TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
+             UnknownParameters unknown_parameters = UnknownParameters::kWarn);
   ~TrackerRos();
 
   /// Called after every accepted depth frame, in the depth callback, with the tracker (its
@@ -40,6 +46,8 @@ class TrackerRos {
                          const sensor_msgs::Image& depth, const Eigen::Isometry3d& map_alignment)>;
   void setFrameHook(FrameHook hook) { frame_hook_ = std::move(hook); }
   const TrackerNodeSettings& settings() const { return settings_; }
+  /// Resolved names of the parameters the tracker reads.
+  const std::set<std::string>& parameterNames() const { return parameter_names_; }
 
  private:
   void onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info);
@@ -55,6 +63,7 @@ class TrackerRos {
   Eigen::Isometry3d mapAlignment(const Eigen::Isometry3d& first_pose, const ros::Time& stamp);
   void forwardImu(const ImuSample& sample);
 
+  std::set<std::string> parameter_names_;  // filled by the readers of config_ and settings_
   TrackerConfig config_;
   TrackerNodeSettings settings_;
   std::unique_ptr<TrackerReconfigure> reconfigure_;  ///< ~icp, ~ekf tuning while running

@@ -1,0 +1,56 @@
+#include "vicc_common/ros_parameters.hpp"
+
+#include <algorithm>
+
+#include <ros/console.h>
+#include <ros/param.h>
+
+namespace vicc_common {
+
+std::string describeRosParameter(const ros::NodeHandle& nh, const std::string& name) {
+  XmlRpc::XmlRpcValue value;
+  if (!nh.getParam(name, value)) return "no value";
+  switch (value.getType()) {
+    case XmlRpc::XmlRpcValue::TypeBoolean:
+      return std::string("'") + (static_cast<bool>(value) ? "true" : "false") + "'";
+    case XmlRpc::XmlRpcValue::TypeInt:
+      return "'" + std::to_string(static_cast<int>(value)) + "'";
+    case XmlRpc::XmlRpcValue::TypeDouble:
+      return "'" + std::to_string(static_cast<double>(value)) + "'";
+    case XmlRpc::XmlRpcValue::TypeString:
+      return "'" + static_cast<std::string>(value) + "'";
+    case XmlRpc::XmlRpcValue::TypeArray:
+      return "a list";
+    case XmlRpc::XmlRpcValue::TypeStruct:
+      return "a section";
+    default:
+      return "a value of another type";
+  }
+}
+
+std::vector<std::string> unknownRosParameters(const ros::NodeHandle& nh,
+                                              const std::set<std::string>& known) {
+  std::vector<std::string> all_names;
+  std::vector<std::string> unknown;
+  if (!ros::param::getParamNames(all_names)) return unknown;  // no master: nothing to check
+  const std::string prefix = nh.getNamespace() == "/" ? "/" : nh.getNamespace() + "/";
+  for (const std::string& name : all_names) {
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    if (known.count(name) == 0) unknown.push_back(name);
+  }
+  std::sort(unknown.begin(), unknown.end());
+  return unknown;
+}
+
+std::vector<std::string> warnUnknownRosParameters(const ros::NodeHandle& nh,
+                                                  const std::set<std::string>& known) {
+  const std::vector<std::string> unknown = unknownRosParameters(nh, known);
+  if (unknown.empty()) return unknown;
+  std::string names;
+  for (const std::string& name : unknown) names += (names.empty() ? "" : ", ") + name;
+  ROS_WARN("unknown parameters under %s, ignored (a typo?): %s", nh.getNamespace().c_str(),
+           names.c_str());
+  return unknown;
+}
+
+}  // namespace vicc_common

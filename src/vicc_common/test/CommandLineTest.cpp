@@ -1,0 +1,102 @@
+#include <gtest/gtest.h>
+
+#include "vicc_common/command_line.hpp"
+
+namespace vicc_common::cli {
+namespace {
+
+const std::vector<OptionSpec> kSpecs = {
+    {"size", "PIXELS", "edge length"},
+    {"scale", "FACTOR", "zoom"},
+    {"json", "", "machine-readable output"},
+};
+
+std::string usageErrorOf(const std::vector<std::string>& args) {
+  try {
+    parseArguments(args, kSpecs);
+  } catch (const UsageError& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+TEST(CommandLine, ParsesBothValueFormsFlagsAndPositionals) {
+  const ParsedArguments parsed =
+      parseArguments({"in.svg", "--size", "64", "--scale=1.5", "--json", "-", "out.png"}, kSpecs);
+  EXPECT_EQ(parsed.positional, (std::vector<std::string>{"in.svg", "-", "out.png"}));
+  EXPECT_EQ(parsed.value("size"), "64");
+  EXPECT_EQ(parsed.value("scale"), "1.5");
+  EXPECT_TRUE(parsed.flag("json"));
+  EXPECT_TRUE(parsed.has("size"));
+  EXPECT_FALSE(parsed.has("other"));
+  EXPECT_EQ(parsed.value("missing", "fallback"), "fallback");
+}
+
+TEST(CommandLine, RepeatedOptionsKeepEveryValueInOrder) {
+  const ParsedArguments parsed = parseArguments({"--size=1", "--size", "2"}, kSpecs);
+  EXPECT_EQ(parsed.value("size"), "2");  // the last one wins for value()
+  EXPECT_EQ(parsed.all("size"), (std::vector<std::string>{"1", "2"}));
+  EXPECT_TRUE(parsed.all("scale").empty());
+}
+
+TEST(CommandLine, UsageErrorIsAnInvalidArgument) {
+  EXPECT_THROW(parseArguments({"--nope"}, kSpecs), std::invalid_argument);
+}
+
+TEST(CommandLine, DoubleDashEndsTheOptions) {
+  const ParsedArguments parsed = parseArguments({"--", "--size", "-x"}, kSpecs);
+  EXPECT_EQ(parsed.positional, (std::vector<std::string>{"--size", "-x"}));
+  EXPECT_TRUE(parsed.values.empty());
+}
+
+TEST(CommandLine, MistakesAreUsageErrorsThatSayWhat) {
+  EXPECT_EQ(usageErrorOf({"--sise", "3"}), "unknown option '--sise'");
+  EXPECT_EQ(usageErrorOf({"-s"}), "unknown option '-s' (options start with --)");
+  EXPECT_EQ(usageErrorOf({"--size"}), "option '--size' needs a value PIXELS");
+  EXPECT_EQ(usageErrorOf({"--json=yes"}), "option '--json' takes no value");
+}
+
+TEST(CommandLine, TypedGettersCheckRanges) {
+  const ParsedArguments parsed = parseArguments({"--size", "64", "--scale", "2.5e-1"}, kSpecs);
+  EXPECT_EQ(parsed.integer("size", 1, 1, 4096), 64);
+  EXPECT_DOUBLE_EQ(parsed.number("scale", 1.0, 0.0, 10.0), 0.25);
+  EXPECT_EQ(parsed.integer("absent", 7, 1, 10), 7);
+  EXPECT_THROW(parsed.integer("size", 1, 1, 32), UsageError);
+  EXPECT_THROW(parsed.number("scale", 1.0, 0.5, 10.0), UsageError);
+  EXPECT_EQ(parsed.required("size", "render"), "64");
+  try {
+    parsed.required("json", "render");
+    FAIL() << "no error";
+  } catch (const UsageError& error) {
+    EXPECT_STREQ(error.what(), "render needs --json");
+  }
+}
+
+TEST(CommandLine, NumberParsingRejectsJunkAndNonFinite) {
+  EXPECT_EQ(parseInteger("n", "12", 0, 20), 12);
+  for (const char* text : {"", "12x", "1.5", " 3", "99"}) {
+    EXPECT_THROW(parseInteger("n", text, 0, 20), UsageError) << text;
+  }
+  try {
+    parseInteger("n", "abc", 0, 20);
+  } catch (const UsageError& error) {
+    EXPECT_STREQ(error.what(), "option '--n' needs an integer from 0 to 20, got 'abc'");
+  }
+  EXPECT_DOUBLE_EQ(parseNumber("x", "-0.5", -1.0, 1.0), -0.5);
+  for (const char* text : {"nan", "inf", "1e999", "0.5m", "2"}) {
+    EXPECT_THROW(parseNumber("x", text, -1.0, 1.0), UsageError) << text;
+  }
+}
+
+TEST(CommandLine, HelpAlignsTheOptions) {
+  EXPECT_EQ(formatOptions(kSpecs),
+            "  --size PIXELS   edge length\n"
+            "  --scale FACTOR  zoom\n"
+            "  --json          machine-readable output\n");
+  EXPECT_EQ(helpText("tool [options] FILE", "Does a thing.", {kSpecs[2]}),
+            "usage: tool [options] FILE\nDoes a thing.\noptions:\n"
+            "  --json  machine-readable output\n");
+}
+
+}  // namespace
+}  // namespace vicc_common::cli
