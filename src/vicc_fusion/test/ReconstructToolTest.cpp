@@ -8,15 +8,18 @@
 
 #include "reconstruct_options.hpp"
 #include "reconstruct_report.hpp"
+#include "vicc_paths/package_share.hpp"
 #include "vicc_tracking/tracker_config_yaml.hpp"
-
-#ifndef VICC_TRACKER_CONFIG_DIR
-#error "VICC_TRACKER_CONFIG_DIR must be defined by the build"
-#endif
 
 using namespace vicc_fusion;
 
 namespace {
+
+/// vicc_tracking's config/, found as an installed consumer finds it (share/ next to this test).
+std::string trackerConfigDir() {
+  static const int anchor = 0;
+  return vicc_paths::packageDataPath("vicc_tracking", "config", &anchor).string();
+}
 
 bool parse(std::vector<const char*> args, ReconstructOptions& options) {
   args.insert(args.begin(), "vicc_reconstruct");
@@ -121,15 +124,15 @@ TEST(ReconstructToolTest, ConfigFileRoundTripsNonDefaultValues) {
   EXPECT_EQ(options.tracker.icp.iterations_per_level, (std::vector<int>{7, 3}));
   EXPECT_EQ(options.tracker.ekf.process_noise_position, 2.5e-7);
   EXPECT_EQ(options.tracker.ekf.measurement_noise_rotation, 1.0 / 3.0);
-  EXPECT_EQ(options.tracker.ekf.process_noise_velocity, vicc_tracking::EkfConfig{}.process_noise_velocity);
+  EXPECT_EQ(options.tracker.ekf.process_noise_velocity,
+            vicc_tracking::EkfConfig{}.process_noise_velocity);
   EXPECT_EQ(options.tracker.synchronizer.max_gap, 0.25);
   // Every parameter comes back: the read set writes the same text.
   EXPECT_EQ(vicc_tracking::toYaml(vicc_tracking::loadTrackerParameters(file.path())), yaml);
 
   // --init and --levels on the command line override the file.
   options = ReconstructOptions{};
-  ASSERT_TRUE(parse({"rec.bag", "--config", file.path().c_str(), "--init", "ekf", "--levels",
-                     "1"},
+  ASSERT_TRUE(parse({"rec.bag", "--config", file.path().c_str(), "--init", "ekf", "--levels", "1"},
                     options));
   EXPECT_EQ(options.init, vicc_tracking::InitStrategyType::kEkf);
   EXPECT_EQ(options.tracker.init_strategy, vicc_tracking::InitStrategyType::kEkf);
@@ -146,7 +149,7 @@ TEST(ReconstructToolTest, ConfigFileRoundTripsNonDefaultValues) {
 
 TEST(ReconstructToolTest, ConfigFilesOfThePackageLoad) {
   // The node's file documents the defaults: reading it must change nothing.
-  const std::string directory = VICC_TRACKER_CONFIG_DIR;
+  const std::string directory = trackerConfigDir();
   const auto defaults = vicc_tracking::loadTrackerParameters(directory + "/tracker.yaml");
   EXPECT_EQ(vicc_tracking::toYaml(defaults), vicc_tracking::toYaml({}));
   ReconstructOptions options;
@@ -175,7 +178,7 @@ TEST(ReconstructToolTest, ConfigFilesOfThePackageLoad) {
 }
 
 TEST(ReconstructToolTest, ImuNoiseFileDerivesTheProcessNoise) {
-  const std::string file = std::string(VICC_TRACKER_CONFIG_DIR) + "/imu/bosch_bmi270.yaml";
+  const std::string file = trackerConfigDir() + "/imu/bosch_bmi270.yaml";
   ReconstructOptions options;
   ASSERT_TRUE(parse({"a.bag", "--imu-noise", file.c_str()}, options));
   EXPECT_EQ(options.tracker.ekf.imu_noise_file, file);

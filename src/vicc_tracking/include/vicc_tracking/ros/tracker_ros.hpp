@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include <image_transport/image_transport.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
@@ -32,9 +33,9 @@ class TrackerRos {
   /// currentFrame() is the frame just tracked), the report, the depth message and
   /// T_published-map_tracker-map. Lets the fusion work on the frame without a copy and hand
   /// its model prediction back (frame-to-model) before the next frame arrives.
-  using FrameHook = std::function<void(Tracker& tracker, const FrameReport& report,
-                                       const sensor_msgs::Image& depth,
-                                       const Eigen::Isometry3d& map_alignment)>;
+  using FrameHook =
+      std::function<void(Tracker& tracker, const FrameReport& report,
+                         const sensor_msgs::Image& depth, const Eigen::Isometry3d& map_alignment)>;
   void setFrameHook(FrameHook hook) { frame_hook_ = std::move(hook); }
   const TrackerNodeSettings& settings() const { return settings_; }
 
@@ -70,7 +71,7 @@ class TrackerRos {
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
-  ros::Subscriber depth_sub_;
+  image_transport::Subscriber depth_sub_;  ///< raw or e.g. compressedDepth (~image_transport)
   ros::Subscriber info_sub_;
   ros::Subscriber imu_sub_;
   ros::Publisher odom_pub_;
