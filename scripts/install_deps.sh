@@ -25,6 +25,8 @@ PACKAGES=(
   librsvg2-bin
   # tests
   libgtest-dev googletest xvfb xauth imagemagick clang libclang-rt-14-dev
+  # formatting gate of .ci/run (scripts/check_format.sh)
+  clang-format-14
   # FHIR R4 conformance test: JSON Schema validation of the export
   python3-jsonschema
 )

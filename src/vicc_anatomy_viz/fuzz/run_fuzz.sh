@@ -13,6 +13,8 @@ TARGETS=("$@")
 [ ${#TARGETS[@]} -eq 0 ] && TARGETS=(json_import fhir_import validator)
 PACKAGE_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 WORK_DIR="${FUZZ_WORK_DIR:-/tmp/vicc_anatomy_viz_fuzz}"
+# The core finds its configuration through vicc_paths (a sibling package in this workspace).
+VICC_PATHS_DIR="$PACKAGE_DIR/../vicc_paths"
 mkdir -p "$WORK_DIR"
 
 # The core library's sources exactly as CMakeLists.txt lists them, so the fuzzers test what
@@ -21,7 +23,8 @@ mapfile -t CORE_SOURCES < <(sed -n '/^add_library(vicc_anatomy_viz_core/,/)/p' \
   "$PACKAGE_DIR/CMakeLists.txt" | grep -o 'src/core/[a-z_]*\.cpp' | sed 's|src/core/||; s|\.cpp$||')
 FUZZ_SOURCES=(fuzz_model fuzz_json_import fuzz_fhir_import fuzzed_examinations fuzz_validator)
 FLAGS=(-std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
-       -I"$PACKAGE_DIR/include" -DVICC_ANATOMY_VIZ_SOURCE_DIR="\"$PACKAGE_DIR\"")
+       -I"$PACKAGE_DIR/include" -I"$VICC_PATHS_DIR/include"
+       -DVICC_ANATOMY_VIZ_SOURCE_DIR="\"$PACKAGE_DIR\"")
 
 # The core and the harnesses once, as objects; then one entry point per target.
 build_objects() {
@@ -30,6 +33,7 @@ build_objects() {
   for name in "${CORE_SOURCES[@]}"; do
     clang++ "${FLAGS[@]}" -c "$PACKAGE_DIR/src/core/$name.cpp" -o "$WORK_DIR/obj/$name.o"
   done
+  clang++ "${FLAGS[@]}" -c "$VICC_PATHS_DIR/src/package_share.cpp" -o "$WORK_DIR/obj/package_share.o"
   for name in "${FUZZ_SOURCES[@]}"; do
     clang++ "${FLAGS[@]}" -c "$PACKAGE_DIR/fuzz/$name.cpp" -o "$WORK_DIR/obj/$name.o"
   done

@@ -11,16 +11,24 @@
 #include "vicc_common/yaml_parameters.hpp"
 #include "vicc_fusion/fusion_config_yaml.hpp"
 #include "vicc_fusion/fusion_parameters.hpp"
+#include "vicc_paths/package_share.hpp"
 #include "vicc_tracking/tracker_config_yaml.hpp"
 
-#if !defined(VICC_TRACKER_CONFIG_DIR) || !defined(VICC_FUSION_CONFIG_DIR)
-#error "VICC_TRACKER_CONFIG_DIR and VICC_FUSION_CONFIG_DIR must be defined by the build"
+// This package's own config/ (fusion.yaml); vicc_tracking's is found through vicc_paths.
+#if !defined(VICC_FUSION_CONFIG_DIR)
+#error "VICC_FUSION_CONFIG_DIR must be defined by the build"
 #endif
 
 using namespace vicc_fusion;
 using vicc_common::toYamlParameters;
 
 namespace {
+
+/// vicc_tracking's config/, found as an installed consumer finds it (share/ next to this test).
+std::string trackerConfigDir() {
+  static const int anchor = 0;
+  return vicc_paths::packageDataPath("vicc_tracking", "config", &anchor).string();
+}
 
 bool parse(std::vector<const char*> args, ReconstructOptions& options) {
   args.insert(args.begin(), "vicc_reconstruct");
@@ -150,7 +158,7 @@ TEST(ReconstructToolTest, ConfigFileRoundTripsNonDefaultValues) {
 
 TEST(ReconstructToolTest, ConfigFilesOfThePackageLoad) {
   // The node's file documents the defaults: reading it must change nothing.
-  const std::string directory = VICC_TRACKER_CONFIG_DIR;
+  const std::string directory = trackerConfigDir();
   const auto defaults = vicc_tracking::loadTrackerParameters(directory + "/tracker.yaml");
   EXPECT_EQ(vicc_tracking::toYaml(defaults), vicc_tracking::toYaml({}));
   ReconstructOptions options;
@@ -182,7 +190,7 @@ TEST(ReconstructToolTest, EveryShippedParameterFileLoads) {
   // Every node parameter file of vicc_tracking/config and vicc_fusion/config, and every IMU
   // noise file: a file added later is covered without touching this test.
   std::vector<std::string> parameter_files = {std::string(VICC_FUSION_CONFIG_DIR) + "/fusion.yaml"};
-  const std::filesystem::path tracker_dir = VICC_TRACKER_CONFIG_DIR;
+  const std::filesystem::path tracker_dir = trackerConfigDir();
   for (const auto& entry : std::filesystem::directory_iterator(tracker_dir)) {
     if (entry.path().extension() == ".yaml") parameter_files.push_back(entry.path().string());
   }
@@ -202,7 +210,7 @@ TEST(ReconstructToolTest, EveryShippedParameterFileLoads) {
 }
 
 TEST(ReconstructToolTest, ImuNoiseFileDerivesTheProcessNoise) {
-  const std::string file = std::string(VICC_TRACKER_CONFIG_DIR) + "/imu/bosch_bmi270.yaml";
+  const std::string file = trackerConfigDir() + "/imu/bosch_bmi270.yaml";
   ReconstructOptions options;
   ASSERT_TRUE(parse({"a.bag", "--imu-noise", file.c_str()}, options));
   EXPECT_EQ(options.tracker.ekf.imu_noise_file, file);

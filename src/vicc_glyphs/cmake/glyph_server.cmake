@@ -7,11 +7,9 @@ endif()
 
 add_library(vicc_glyphs_server src/ros/glyph_server.cpp)
 target_compile_options(vicc_glyphs_server PRIVATE ${VICC_WARNINGS})
-target_compile_definitions(vicc_glyphs_server PRIVATE
-  VICC_GLYPHS_DESIGNS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/designs"
-  VICC_GLYPHS_DEFAULT_MODEL="${CMAKE_CURRENT_SOURCE_DIR}/config/perception_model.yaml")
+# Default designs and perception model: share/vicc_glyphs (vicc_paths), in devel and install.
 target_link_libraries(vicc_glyphs_server vicc_glyphs_design vicc_glyphs_ros vicc_glyphs_render
-  ${catkin_LIBRARIES})
+  vicc_paths ${catkin_LIBRARIES})
 add_dependencies(vicc_glyphs_server ${catkin_EXPORTED_TARGETS})
 
 add_executable(glyph_server src/ros/glyph_server_node.cpp)

@@ -8,9 +8,8 @@ target_sources(vicc_glyph PRIVATE
   src/tools/model_path.cpp
   src/tools/levels_command.cpp
   src/tools/fit_command.cpp)
-target_compile_definitions(vicc_glyph PRIVATE
-  VICC_GLYPHS_DEFAULT_MODEL="${CMAKE_CURRENT_SOURCE_DIR}/config/perception_model.yaml")
-target_link_libraries(vicc_glyph vicc_glyphs_perception_fit)
+# The default model: share/vicc_glyphs/config (vicc_paths), in devel and install.
+target_link_libraries(vicc_glyph vicc_glyphs_perception_fit vicc_paths)
 
 if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(vicc_glyph_perception_cli_test

@@ -8,9 +8,8 @@ add_library(vicc_tracking_sim
   src/sim/extrapolation_error.cpp
 )
 target_compile_options(vicc_tracking_sim PRIVATE ${VICC_WARNINGS})
-target_compile_definitions(vicc_tracking_sim PRIVATE
-  VICC_SCENARIO_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config/scenarios")
-target_link_libraries(vicc_tracking_sim vicc_tracking_core ${OpenCV_LIBS} yaml-cpp)
+# Named scenarios come from share/vicc_tracking/config (vicc_paths), in devel and install.
+target_link_libraries(vicc_tracking_sim vicc_tracking_core vicc_paths ${OpenCV_LIBS} yaml-cpp)
 
 if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(vicc_tracking_sim_test

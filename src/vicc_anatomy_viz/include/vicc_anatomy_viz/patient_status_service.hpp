@@ -26,7 +26,7 @@ struct PatientStatusConfig {
   void validate() const;  ///< throws std::invalid_argument naming the field
 };
 
-/// <package>/config/..., found through ROS_PACKAGE_PATH or the build's source directory.
+/// <package>/config/..., found in share/vicc_anatomy_viz of the devel or install space.
 std::string defaultEncodingConfigPath();
 std::string defaultAnatomyConfigPath();
 

@@ -92,7 +92,7 @@ AvatarModel buildAvatarModel(const std::string& manifest_path, const AnatomyCata
 }
 
 std::string defaultAvatarManifestPath() {
-  // Next to the anatomy catalogue, found the same way (ROS_PACKAGE_PATH or the source tree).
+  // Next to the anatomy catalogue, found the same way (share/ of the devel or install space).
   return (std::filesystem::path(defaultAnatomyConfigPath()).parent_path() / "avatar.yaml").string();
 }
 

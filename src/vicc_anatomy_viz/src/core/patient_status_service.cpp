@@ -8,35 +8,17 @@
 
 #include "vicc_anatomy_viz/errors.hpp"
 #include "vicc_anatomy_viz/time_format.hpp"
-
-#ifndef VICC_ANATOMY_VIZ_SOURCE_DIR
-#define VICC_ANATOMY_VIZ_SOURCE_DIR ""
-#endif
+#include "vicc_paths/package_share.hpp"
 
 namespace vicc_anatomy_viz {
 
 namespace {
 
-/// The package directory: through ROS_PACKAGE_PATH like rospack, else the build's source tree.
+/// <share>/vicc_anatomy_viz/<relative> of the devel or install space holding this code (the
+/// core library, or vicc_patient, which takes the core's objects in).
 std::string packageFile(const std::string& relative) {
-  namespace fs = std::filesystem;
-  const char* ros_package_path = std::getenv("ROS_PACKAGE_PATH");
-  if (ros_package_path) {
-    std::stringstream paths(ros_package_path);
-    std::string entry;
-    while (std::getline(paths, entry, ':')) {
-      if (entry.empty()) continue;
-      for (const fs::path& candidate :
-           {fs::path(entry) / "vicc_anatomy_viz" / relative, fs::path(entry) / relative}) {
-        std::error_code error;
-        if (fs::exists(candidate, error) &&
-            candidate.string().find("vicc_anatomy_viz") != std::string::npos) {
-          return candidate.string();
-        }
-      }
-    }
-  }
-  return (fs::path(VICC_ANATOMY_VIZ_SOURCE_DIR) / relative).string();
+  static const int anchor = 0;
+  return vicc_paths::packageDataPath("vicc_anatomy_viz", relative, &anchor).string();
 }
 
 /// A database that turned out unusable is dropped, so that the next call opens it afresh.

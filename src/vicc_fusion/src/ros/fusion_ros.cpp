@@ -74,8 +74,11 @@ FusionRos::FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   frame_id_ = settings_.map_frame;
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
-  depth_sub_ = std::make_unique<message_filters::Subscriber<sensor_msgs::Image>>(
-      nh, "depth/image", settings_.pose_queue_size);
+  // Depth through image_transport (raw, or e.g. compressedDepth with ~image_transport).
+  image_transport::ImageTransport image_transport(nh);
+  depth_sub_ = std::make_unique<image_transport::SubscriberFilter>(
+      image_transport, "depth/image", settings_.pose_queue_size,
+      image_transport::TransportHints("raw", ros::TransportHints(), private_nh));
   depth_pose_filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::Image>>(
       *depth_sub_, *tf_buffer_, frame_id_, settings_.pose_queue_size, nh);
   depth_pose_filter_->registerCallback(&FusionRos::onDepth, this);

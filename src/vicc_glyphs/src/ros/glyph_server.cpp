@@ -10,11 +10,18 @@
 #include "vicc_glyphs/perception/perception_model_yaml.hpp"
 #include "vicc_glyphs/render/png_output.hpp"
 #include "vicc_glyphs/ros/image_message.hpp"
+#include "vicc_paths/package_share.hpp"
 
 namespace vicc_glyphs::ros_glyph {
 namespace {
 
 constexpr int kMaxSize = 4096;
+
+/// share/vicc_glyphs/<relative> of the devel or install space that holds this library.
+std::string packageFile(const std::string& relative) {
+  static const int anchor = 0;
+  return vicc_paths::packageDataPath("vicc_glyphs", relative, &anchor).string();
+}
 
 std::string stringParameter(const ros::NodeHandle& nh, const std::string& name,
                             const std::string& fallback) {
@@ -30,9 +37,9 @@ std::string stringParameter(const ros::NodeHandle& nh, const std::string& name,
 
 GlyphServerParameters readGlyphServerParameters(const ros::NodeHandle& private_nh) {
   GlyphServerParameters parameters;
-  parameters.designs_dir = stringParameter(private_nh, "designs_dir", VICC_GLYPHS_DESIGNS_DIR);
+  parameters.designs_dir = stringParameter(private_nh, "designs_dir", packageFile("designs"));
   parameters.perception_model =
-      stringParameter(private_nh, "perception_model", VICC_GLYPHS_DEFAULT_MODEL);
+      stringParameter(private_nh, "perception_model", packageFile("config/perception_model.yaml"));
   if (private_nh.hasParam("cache_size")) {
     int size = 0;
     if (!private_nh.getParam("cache_size", size) || size < 1 || size > 10000) {

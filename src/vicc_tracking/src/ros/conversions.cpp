@@ -1,11 +1,13 @@
 #include "vicc_tracking/ros/conversions.hpp"
 
 #include <cmath>
-#include <cstring>
 #include <sstream>
 #include <stdexcept>
 
+#include <cv_bridge/cv_bridge.h>
+#include <geometry_msgs/TransformStamped.h>
 #include <sensor_msgs/image_encodings.h>
+#include <tf2_eigen/tf2_eigen.h>
 
 namespace vicc_tracking {
 namespace {
@@ -47,36 +49,40 @@ sensor_msgs::CameraInfo cameraInfoFromModel(const CameraModel& camera) {
 
 namespace {
 
-/// A cv::Mat over the message's data after checking size, step and byte order; `what` names
-/// the image in the error messages.
-cv::Mat checkedView(const sensor_msgs::Image& image, int type, size_t element_size,
-                    const std::string& what) {
+/// The message's pixels as a cv::Mat of `type` over the message's data (cv_bridge, no copy).
+/// `what` names the image in the error messages.
+cv::Mat sharedView(const sensor_msgs::Image& image, int type, const std::string& what) {
   if (image.width == 0 || image.height == 0) {
     throw std::invalid_argument(what + " image is empty (0 width or height)");
   }
-  if (image.step < image.width * element_size ||
-      image.data.size() < static_cast<size_t>(image.step) * image.height) {
-    std::ostringstream message;
-    message << what << " image " << image.width << "x" << image.height << " has step " << image.step
-            << " and " << image.data.size() << " bytes of data: too small";
-    throw std::invalid_argument(message.str());
-  }
+  // cv_bridge's byte swap of big-endian images returns the bytes as CV_8UC2/CV_8UC4 instead of
+  // the pixel type (Debian's cv_bridge 1.16): refused here rather than passed on as depth.
   const bool host_big_endian = false;  // x86/ARM Linux hosts are little endian
-  if (element_size > 1 && static_cast<bool>(image.is_bigendian) != host_big_endian) {
+  if (CV_ELEM_SIZE1(type) > 1 && static_cast<bool>(image.is_bigendian) != host_big_endian) {
     throw std::invalid_argument(what + " image is big-endian; only little-endian is supported");
   }
-  // The Mat is read-only in practice; OpenCV's API needs a non-const pointer.
-  return cv::Mat(static_cast<int>(image.height), static_cast<int>(image.width), type,
-                 const_cast<uint8_t*>(image.data.data()), image.step);
+  try {
+    cv::Mat view = cv_bridge::toCvShare(image, nullptr, image.encoding)->image;
+    if (view.type() != type) {
+      throw std::invalid_argument(what + " image (" + image.encoding +
+                                  ") did not convert to the expected pixel type");
+    }
+    return view;
+  } catch (const cv_bridge::Exception& error) {
+    std::ostringstream message;
+    message << what << " image " << image.width << "x" << image.height << " (" << image.encoding
+            << ", step " << image.step << ", " << image.data.size() << " bytes): " << error.what();
+    throw std::invalid_argument(message.str());
+  }
 }
 
 }  // namespace
 
 cv::Mat depthImageView(const sensor_msgs::Image& image) {
   namespace enc = sensor_msgs::image_encodings;
-  if (image.encoding == enc::TYPE_32FC1) return checkedView(image, CV_32FC1, 4, "depth");
-  if (image.encoding == enc::TYPE_16UC1 || image.encoding == enc::MONO16) {
-    return checkedView(image, CV_16UC1, 2, "depth");
+  if (image.encoding == enc::TYPE_32FC1 || image.encoding == enc::TYPE_16UC1 ||
+      image.encoding == enc::MONO16) {
+    return sharedView(image, image.encoding == enc::TYPE_32FC1 ? CV_32FC1 : CV_16UC1, "depth");
   }
   throw std::invalid_argument("depth image has encoding '" + image.encoding +
                               "'; expected 32FC1 (metres) or 16UC1 (millimetres)");
@@ -85,12 +91,12 @@ cv::Mat depthImageView(const sensor_msgs::Image& image) {
 cv::Mat intensityImageView(const sensor_msgs::Image& image) {
   namespace enc = sensor_msgs::image_encodings;
   if (image.encoding == enc::MONO8 || image.encoding == enc::TYPE_8UC1) {
-    return checkedView(image, CV_8UC1, 1, "gray");
+    return sharedView(image, CV_8UC1, "gray");
   }
   if (image.encoding == enc::MONO16 || image.encoding == enc::TYPE_16UC1) {
-    return checkedView(image, CV_16UC1, 2, "gray");
+    return sharedView(image, CV_16UC1, "gray");
   }
-  if (image.encoding == enc::TYPE_32FC1) return checkedView(image, CV_32FC1, 4, "gray");
+  if (image.encoding == enc::TYPE_32FC1) return sharedView(image, CV_32FC1, "gray");
   throw std::invalid_argument("gray image has encoding '" + image.encoding +
                               "'; expected mono8, mono16 or 32FC1");
 }
@@ -102,18 +108,10 @@ bool isGrayEncoding(const std::string& encoding) {
 
 namespace {
 
-/// A little-endian Image message holding a copy of `mat` (rows packed).
+/// An Image message holding a copy of `mat` (rows packed, host byte order).
 sensor_msgs::Image imageMessage(const cv::Mat& mat, const std::string& encoding) {
   sensor_msgs::Image image;
-  image.encoding = encoding;
-  image.width = static_cast<uint32_t>(mat.cols);
-  image.height = static_cast<uint32_t>(mat.rows);
-  image.step = static_cast<uint32_t>(image.width * mat.elemSize());
-  image.is_bigendian = 0;
-  image.data.resize(static_cast<size_t>(image.step) * image.height);
-  for (int row = 0; row < mat.rows; ++row) {
-    std::memcpy(&image.data[static_cast<size_t>(row) * image.step], mat.ptr(row), image.step);
-  }
+  cv_bridge::CvImage(std_msgs::Header(), encoding, mat).toImageMsg(image);
   return image;
 }
 
@@ -149,38 +147,24 @@ ImuSample imuSampleFromMessage(const sensor_msgs::Imu& imu) {
 
 Eigen::Isometry3d isometryFromTransform(const geometry_msgs::Transform& transform) {
   const auto& r = transform.rotation;
-  Eigen::Quaterniond rotation(r.w, r.x, r.y, r.z);
-  if (!std::isfinite(rotation.norm()) || std::abs(rotation.norm() - 1.0) > 1e-3) {
+  const double norm = std::sqrt(r.w * r.w + r.x * r.x + r.y * r.y + r.z * r.z);
+  if (!std::isfinite(norm) || std::abs(norm - 1.0) > 1e-3) {
     throw std::invalid_argument("transform has a non-unit rotation quaternion");
   }
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = rotation.normalized().toRotationMatrix();
-  pose.translation() =
-      Eigen::Vector3d(transform.translation.x, transform.translation.y, transform.translation.z);
-  return pose;
+  // tf2_eigen takes the quaternion as it is: normalise it so the rotation is orthonormal.
+  geometry_msgs::TransformStamped stamped;
+  stamped.transform = transform;
+  stamped.transform.rotation.w /= norm;
+  stamped.transform.rotation.x /= norm;
+  stamped.transform.rotation.y /= norm;
+  stamped.transform.rotation.z /= norm;
+  return tf2::transformToEigen(stamped);
 }
 
 geometry_msgs::Transform transformFromIsometry(const Eigen::Isometry3d& pose) {
-  geometry_msgs::Transform transform;
-  const Eigen::Quaterniond rotation(pose.linear());
-  transform.translation.x = pose.translation().x();
-  transform.translation.y = pose.translation().y();
-  transform.translation.z = pose.translation().z();
-  transform.rotation.w = rotation.w();
-  transform.rotation.x = rotation.x();
-  transform.rotation.y = rotation.y();
-  transform.rotation.z = rotation.z();
-  return transform;
+  return tf2::eigenToTransform(pose).transform;
 }
 
-geometry_msgs::Pose poseFromIsometry(const Eigen::Isometry3d& pose) {
-  const geometry_msgs::Transform transform = transformFromIsometry(pose);
-  geometry_msgs::Pose result;
-  result.position.x = transform.translation.x;
-  result.position.y = transform.translation.y;
-  result.position.z = transform.translation.z;
-  result.orientation = transform.rotation;
-  return result;
-}
+geometry_msgs::Pose poseFromIsometry(const Eigen::Isometry3d& pose) { return tf2::toMsg(pose); }
 
 }  // namespace vicc_tracking

@@ -30,7 +30,12 @@ TrackerRos::TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
   imu_sub_ =
       nh.subscribe("imu", 2000, &TrackerRos::onImu, this, ros::TransportHints().tcpNoDelay());
   info_sub_ = nh.subscribe("depth/camera_info", 10, &TrackerRos::onCameraInfo, this);
-  depth_sub_ = nh.subscribe("depth/image", 10, &TrackerRos::onDepth, this);
+  // image_transport: a recording or driver with compressedDepth works with
+  // ~image_transport:=compressedDepth. Not lazy: tf and odometry are always wanted.
+  image_transport::ImageTransport image_transport(nh);
+  depth_sub_ = image_transport.subscribe(
+      "depth/image", 10, &TrackerRos::onDepth, this,
+      image_transport::TransportHints("raw", ros::TransportHints(), private_nh));
   path_.header.frame_id = settings_.map_frame;
   ROS_INFO(
       "tracker: init strategy '%s', %d pyramid level(s); depth on %s, camera_info on %s, "

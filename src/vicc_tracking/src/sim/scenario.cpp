@@ -7,9 +7,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#ifndef VICC_SCENARIO_DIR
-#error "VICC_SCENARIO_DIR must be defined by the build"
-#endif
+#include "vicc_paths/package_share.hpp"
 
 namespace vicc_tracking::sim {
 namespace {
@@ -97,7 +95,8 @@ Primitive readPrimitive(const Reader& reader, const YAML::Node& node, size_t ind
   } else if (type == "cylinder") {
     primitive.type = PrimitiveType::kCylinder;
     const double radius = reader.get<double>(node, "radius", path);
-    primitive.half_size = Eigen::Vector3d(radius, radius, 0.5 * reader.get<double>(node, "height", path));
+    primitive.half_size =
+        Eigen::Vector3d(radius, radius, 0.5 * reader.get<double>(node, "height", path));
   } else {
     reader.fail(path + "type", "'" + type + "' is not one of box, ellipsoid, sphere, cylinder");
   }
@@ -138,9 +137,11 @@ TrajectoryConfig readTrajectory(const Reader& reader, const YAML::Node& node) {
 }  // namespace
 
 void TofNoiseConfig::validate() const {
-  if (!(sigma0 >= 0.0) || !(sigma_quadratic >= 0.0)) throw std::invalid_argument("tof: sigma must be >= 0");
+  if (!(sigma0 >= 0.0) || !(sigma_quadratic >= 0.0))
+    throw std::invalid_argument("tof: sigma must be >= 0");
   for (const double p : {flying_pixel_probability, dropout_probability}) {
-    if (!(p >= 0.0 && p <= 1.0)) throw std::invalid_argument("tof: probabilities must be in [0, 1]");
+    if (!(p >= 0.0 && p <= 1.0))
+      throw std::invalid_argument("tof: probabilities must be in [0, 1]");
   }
   if (!(edge_jump > 0.0)) throw std::invalid_argument("tof: edge_jump must be > 0");
   if (!(min_range >= 0.0 && max_range > min_range)) {
@@ -153,8 +154,10 @@ void TofNoiseConfig::validate() const {
 }
 
 void ImuNoiseConfig::validate() const {
-  if (!(rate_hz >= 50.0 && rate_hz <= 2000.0)) throw std::invalid_argument("imu: rate_hz must be in [50, 2000]");
-  if (!gyro_bias.allFinite() || !accel_bias.allFinite()) throw std::invalid_argument("imu: bias not finite");
+  if (!(rate_hz >= 50.0 && rate_hz <= 2000.0))
+    throw std::invalid_argument("imu: rate_hz must be in [50, 2000]");
+  if (!gyro_bias.allFinite() || !accel_bias.allFinite())
+    throw std::invalid_argument("imu: bias not finite");
   if (!(gyro_noise_density >= 0.0) || !(accel_noise_density >= 0.0)) {
     throw std::invalid_argument("imu: noise densities must be >= 0");
   }
@@ -194,8 +197,8 @@ CameraModel picoFlexxCamera() {
 
 Eigen::Isometry3d defaultImuToCamera() {
   Eigen::Matrix3d mounting;  // columns: optical x, y, z in IMU coordinates
-  mounting << 0, 0, 1,  //
-      -1, 0, 0,         //
+  mounting << 0, 0, 1,       //
+      -1, 0, 0,              //
       0, -1, 0;
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.linear() = mounting * (Eigen::AngleAxisd(degrees(2.0), Eigen::Vector3d::UnitX()) *
@@ -206,11 +209,18 @@ Eigen::Isometry3d defaultImuToCamera() {
   return pose;
 }
 
+std::string scenarioDirectory() {
+  // Anchored at this library: <prefix>/lib/libvicc_tracking_sim.so -> <prefix>/share/vicc_tracking.
+  return vicc_paths::packageDataPath("vicc_tracking", "config/scenarios",
+                                     reinterpret_cast<const void*>(&scenarioDirectory))
+      .string();
+}
+
 Scenario loadScenario(const std::string& name_or_path) {
   std::string path = name_or_path;
   const bool is_path = path.size() > 5 && (path.substr(path.size() - 5) == ".yaml" ||
                                            path.find('/') != std::string::npos);
-  if (!is_path) path = std::string(VICC_SCENARIO_DIR) + "/" + name_or_path + ".yaml";
+  if (!is_path) path = scenarioDirectory() + "/" + name_or_path + ".yaml";
   if (!std::filesystem::exists(path)) {
     std::string names;
     for (const auto& name : availableScenarios()) names += " " + name;
@@ -263,7 +273,8 @@ Scenario loadScenario(const std::string& name_or_path) {
   }
   const YAML::Node scene = root["scene"];
   if (!scene || !scene.IsSequence()) reader.fail("scene", "missing or not a list");
-  for (size_t i = 0; i < scene.size(); ++i) scenario.scene.push_back(readPrimitive(reader, scene[i], i));
+  for (size_t i = 0; i < scene.size(); ++i)
+    scenario.scene.push_back(readPrimitive(reader, scene[i], i));
   scenario.trajectory = readTrajectory(reader, root["trajectory"]);
   try {
     scenario.validate();
@@ -276,7 +287,7 @@ Scenario loadScenario(const std::string& name_or_path) {
 std::vector<std::string> availableScenarios() {
   std::vector<std::string> names;
   std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(VICC_SCENARIO_DIR, error)) {
+  for (const auto& entry : std::filesystem::directory_iterator(scenarioDirectory(), error)) {
     if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
   }
   std::sort(names.begin(), names.end());

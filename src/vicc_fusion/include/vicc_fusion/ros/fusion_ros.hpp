@@ -15,7 +15,7 @@
 #include <set>
 #include <string>
 
-#include <message_filters/subscriber.h>
+#include <image_transport/subscriber_filter.h>
 #include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
@@ -81,7 +81,7 @@ class FusionRos {
   std::optional<vicc_tracking::CameraModel> camera_;
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
-  std::unique_ptr<message_filters::Subscriber<sensor_msgs::Image>> depth_sub_;
+  std::unique_ptr<image_transport::SubscriberFilter> depth_sub_;  ///< ~image_transport selects
   std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::Image>> depth_pose_filter_;
   ros::Subscriber info_sub_;
 

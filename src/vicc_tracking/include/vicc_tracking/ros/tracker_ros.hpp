@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 
+#include <image_transport/image_transport.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
@@ -83,7 +84,7 @@ class TrackerRos {
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
-  ros::Subscriber depth_sub_;
+  image_transport::Subscriber depth_sub_;  ///< raw or e.g. compressedDepth (~image_transport)
   ros::Subscriber info_sub_;
   ros::Subscriber imu_sub_;
   ros::Publisher odom_pub_;

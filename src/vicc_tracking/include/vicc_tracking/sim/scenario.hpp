@@ -32,10 +32,10 @@ struct TofNoiseConfig {
 /// MEMS IMU: constant bias + white noise on gyro and accelerometer.
 struct ImuNoiseConfig {
   double rate_hz = 200.0;
-  Eigen::Vector3d gyro_bias{0.004, -0.003, 0.002};     ///< rad/s
-  Eigen::Vector3d accel_bias{0.03, -0.02, 0.04};       ///< m/s^2
-  double gyro_noise_density = 0.0003;                  ///< rad/s/sqrt(Hz)
-  double accel_noise_density = 0.003;                  ///< m/s^2/sqrt(Hz)
+  Eigen::Vector3d gyro_bias{0.004, -0.003, 0.002};  ///< rad/s
+  Eigen::Vector3d accel_bias{0.03, -0.02, 0.04};    ///< m/s^2
+  double gyro_noise_density = 0.0003;               ///< rad/s/sqrt(Hz)
+  double accel_noise_density = 0.003;               ///< m/s^2/sqrt(Hz)
   void validate() const;
 };
 
@@ -57,7 +57,11 @@ struct Scenario {
   void validate() const;
 };
 
-/// "hen" loads VICC_SCENARIO_DIR/hen.yaml; a path ending in .yaml loads that file. Throws
+/// The named scenarios: share/vicc_tracking/config/scenarios of the devel or install space
+/// that holds this library. Throws std::runtime_error listing where it looked.
+std::string scenarioDirectory();
+
+/// "hen" loads scenarioDirectory()/hen.yaml; a path ending in .yaml loads that file. Throws
 /// std::runtime_error naming the file and the missing or invalid key.
 Scenario loadScenario(const std::string& name_or_path);
 std::vector<std::string> availableScenarios();
