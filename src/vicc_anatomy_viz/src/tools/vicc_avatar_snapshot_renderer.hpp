@@ -31,6 +31,8 @@ class AvatarRenderer {
   ~AvatarRenderer();
 
   rviz_plugin::AvatarDisplay& display() { return *display_; }
+  /// The manager, to add further displays beside the avatar (e.g. markers).
+  rviz::VisualizationManager& manager() { return *manager_; }
   /// Processes Qt and ROS events until the display drew more than `previous` statuses
   /// (false after `timeout_s`).
   bool waitForStatus(unsigned previous, double timeout_s);
