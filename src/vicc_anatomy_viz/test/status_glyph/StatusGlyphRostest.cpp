@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <vector>
@@ -152,7 +153,12 @@ class StatusGlyphRostest : public ::testing::Test {
     orbit.distance = 1.2f;
     renderer_->setOrbit(orbit);
     renderer_->spin(0.5);  // rviz's MarkerArray display takes the message in its update
-    return renderer_->grab();
+    const QImage image = renderer_->grab();
+    // For a look at the frames: VICC_STATUS_GLYPH_FRAMES=DIR saves them as DIR/<date>.png.
+    if (const char* dir = std::getenv("VICC_STATUS_GLYPH_FRAMES")) {
+      image.save(QString::fromStdString(std::string(dir) + "/" + date + ".png"));
+    }
+    return image;
   }
 
   Eigen::Vector3f headTop() {
