@@ -11,7 +11,7 @@ namespace vicc_fusion {
 
 struct SurfelShading {
   /// Towards the light, in the cloud's frame (normalised on use): above, a little to the side.
-  Eigen::Vector3f light{0.35f, 0.25f, 0.9f};
+  Eigen::Vector3f light{0.6f, 0.45f, 0.66f};
   float ambient = 0.25f;  ///< grey level of a surface edge-on to the light
 };
 
