@@ -83,3 +83,4 @@ add_dependencies(vicc_avatar_snapshot_test vicc_avatar_snapshot vicc_anatomy_viz
 
 # The patient panel: its logic, avatar.launch, the plugin under Xvfb.
 include(cmake/patient_panel_tests.cmake)
+include(cmake/status_glyph_tests.cmake)

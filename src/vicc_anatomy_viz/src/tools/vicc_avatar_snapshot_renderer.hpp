@@ -31,7 +31,8 @@ class AvatarRenderer {
   ~AvatarRenderer();
 
   rviz_plugin::AvatarDisplay& display() { return *display_; }
-  /// rviz's manager (its update loop renders the window like rviz does; the FPS bench).
+  /// rviz's manager: its update loop renders the window like rviz does (the FPS bench), and
+  /// further displays can be added beside the avatar (e.g. markers).
   rviz::VisualizationManager& manager() { return *manager_; }
   /// Processes Qt and ROS events until the display drew more than `previous` statuses
   /// (false after `timeout_s`).

@@ -16,13 +16,15 @@ using test::shippedModel;
 TEST(EncodingConfigTest, ShippedViewHoldsTheFinalCategoriesOfTable41) {
   const EncodingModel& model = shippedModel();
   const View& view = model.view("neurological_status_sdh");
-  ASSERT_EQ(view.categories.size(), 5u);
+  // Table 4.1's five categories, and the intracranial pressure added for the ICP glyph.
+  ASSERT_EQ(view.categories.size(), 6u);
   const std::vector<std::pair<std::string, std::vector<std::string>>> expected = {
       {"radicular_pain", {"dermatome"}},
       {"paresis", {"muscle"}},
       {"t_reflex", {"tendon"}},
       {"excretion_disorder", {"urethra", "anal_sphincter"}},
-      {"sensory_disorder", {"dermatome"}}};
+      {"sensory_disorder", {"dermatome"}},
+      {"intracranial_pressure", {"brain"}}};
   for (std::size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(view.categories[i].category, expected[i].first);
     EXPECT_EQ(model.category(expected[i].first).spatial_refs, expected[i].second);

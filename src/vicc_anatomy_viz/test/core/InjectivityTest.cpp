@@ -77,14 +77,21 @@ TEST(InjectivityTest, SpatialConflictOfPainAndSensoryDisorderIsDetected) {
 
 TEST(InjectivityTest, PainIntensityQuantizationIsReported) {
   const auto& quantizations = shippedModel().report().quantizations;
-  ASSERT_EQ(quantizations.size(), 1u);  // only the pain intensity of Table 4.1 is quantized
+  // Of Table 4.1 only the pain intensity is quantized; the added ICP (65 abnormal mmHg values,
+  // elevated/pathological) is too -- the glyph above the head shows its value.
+  ASSERT_EQ(quantizations.size(), 2u);
   EXPECT_EQ(quantizations[0].category, "radicular_pain");
   EXPECT_EQ(quantizations[0].prop_type, "intensity");
   EXPECT_EQ(quantizations[0].values, 10);
   EXPECT_EQ(quantizations[0].levels, 3);
   EXPECT_NE(quantizations[0].message.find("quantized: 1-3, 4-6, 7-10"), std::string::npos);
+  EXPECT_EQ(quantizations[1].category, "intracranial_pressure");
+  EXPECT_EQ(quantizations[1].values, 65);
+  EXPECT_EQ(quantizations[1].levels, 2);
+  EXPECT_NE(quantizations[1].message.find("16-22, 23-80"), std::string::npos)
+      << quantizations[1].message;
   const auto notes = shippedModel().notes(shippedModel().view("neurological_status_sdh"));
-  EXPECT_EQ(notes.size(), 2u);  // the quantization and the spatial conflict
+  EXPECT_EQ(notes.size(), 3u);  // the two quantizations and the spatial conflict
   EXPECT_TRUE(shippedModel().notes(shippedModel().view("motor_status")).empty());
 }
 
@@ -111,8 +118,8 @@ TEST(InjectivityTest, NarrowerRangeQuantizesInsteadOfFailing) {
   const EncodingModel model = modelFrom(root);
   std::vector<std::string> quantized;
   for (const auto& q : model.report().quantizations) quantized.push_back(q.category);
-  EXPECT_EQ(quantized,
-            (std::vector<std::string>{"radicular_pain", "t_reflex", "sensory_disorder"}));
+  EXPECT_EQ(quantized, (std::vector<std::string>{"radicular_pain", "t_reflex", "sensory_disorder",
+                                                 "intracranial_pressure"}));
 }
 
 }  // namespace

@@ -120,7 +120,7 @@ TEST(StatusEncoderTest, ColoursFollowHueAndSaturationBrightness) {
 TEST(StatusEncoderTest, Figure46PreOperativeStatus) {
   const EncodedStatus status = encode(figurePatient()[0]);
   ASSERT_TRUE(status.has_examination);
-  EXPECT_EQ(status.structures.size(), 6u);
+  EXPECT_EQ(status.structures.size(), 7u);  // and the (illustrative) ICP of 26 mmHg
 
   const EncodedStructure* pain = entry(status, "radicular_pain", "dermatome_L5", Side::kLeft);
   const EncodedStructure* hypo = entry(status, "sensory_disorder", "dermatome_L5", Side::kLeft);
@@ -202,7 +202,7 @@ TEST(StatusEncoderTest, CategoryFilterResolvesTheAlternation) {
   const EncodedStructure* hypo = entry(status, "sensory_disorder", "dermatome_L5", Side::kLeft);
   ASSERT_NE(hypo, nullptr);
   EXPECT_EQ(hypo->alternation_group, -1);
-  ASSERT_EQ(status.legend.size(), 5u);
+  ASSERT_EQ(status.legend.size(), 6u);
   EXPECT_EQ(status.legend[0].id, "radicular_pain");
   EXPECT_FALSE(status.legend[0].visible);
   EXPECT_EQ(status.legend[0].count, 1u);  // still counted, so the panel can say it is hidden
@@ -224,9 +224,9 @@ TEST(StatusEncoderTest, NoExaminationGivesAnEmptyStatusWithLegend) {
   const EncodedStatus status = encoder.encode("SDH-046", std::nullopt, {"1999-01-01", {}});
   EXPECT_FALSE(status.has_examination);
   EXPECT_TRUE(status.structures.empty());
-  EXPECT_EQ(status.legend.size(), 5u);
+  EXPECT_EQ(status.legend.size(), 6u);
   EXPECT_EQ(status.requested_date, "1999-01-01");
-  EXPECT_EQ(status.notes.size(), 2u);
+  EXPECT_EQ(status.notes.size(), 3u);
 }
 
 TEST(StatusEncoderTest, ParesthesiaWithoutHypoesthesiaIsAPaleTintWithNoise) {
@@ -312,7 +312,7 @@ TEST(StatusEncoderTest, JsonCarriesEverythingTheAvatarNeeds) {
   EXPECT_EQ(json["format"], "vicc-encoded-status");
   EXPECT_EQ(json["patient_id"], "SDH-046");
   EXPECT_EQ(json["examination_time"], "2023-03-06T09:15:00Z");
-  ASSERT_EQ(json["structures"].size(), 6u);
+  ASSERT_EQ(json["structures"].size(), 7u);  // with the (illustrative) ICP of 26 mmHg
   const auto& first = json["structures"][0];
   for (const char* key : {"structure_id", "side", "category", "rgba", "hsv", "intensity_level",
                           "intensity_levels", "texture", "proxy", "overlay_text", "properties",
@@ -322,8 +322,8 @@ TEST(StatusEncoderTest, JsonCarriesEverythingTheAvatarNeeds) {
   EXPECT_EQ(first["rgba"].size(), 4u);
   EXPECT_EQ(json["alternations"][0]["categories"],
             nlohmann::json({"radicular_pain", "sensory_disorder"}));
-  EXPECT_EQ(json["legend"].size(), 5u);
-  EXPECT_EQ(json["notes"].size(), 2u);
+  EXPECT_EQ(json["legend"].size(), 6u);
+  EXPECT_EQ(json["notes"].size(), 3u);  // two quantizations (pain, ICP), one spatial conflict
 }
 
 TEST(StatusEncoderTest, PartialAndPreliminaryExaminationsSaySoEverywhere) {

@@ -81,7 +81,8 @@ TEST(FhirCodeSystemTest, PropertyCodesAreTheCategoryPropertiesAndTheirRecordedSo
       "t_reflex.intensity",
       "excretion_disorder.intensity",
       "sensory_disorder.intensity",
-      "sensory_disorder.paresthesia"};
+      "sensory_disorder.paresthesia",
+      "intracranial_pressure.intensity"};
   EXPECT_EQ(codesOf(system), expected);
   const json& pain = conceptWithCode(system, "radicular_pain.intensity");
   EXPECT_EQ(pain["display"], "Radicular pain intensity");

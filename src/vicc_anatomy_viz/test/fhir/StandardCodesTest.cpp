@@ -54,8 +54,9 @@ TEST(StandardCodesTest, CodesWithoutAPublishedStandardCodeHaveNone) {
 }
 
 TEST(StandardCodesTest, ShippedKeysAreCodesOfTheShippedModel) {
-  EXPECT_EQ(shippedStandardCodes().ourCodes(),
-            std::vector<std::string>{"radicular_pain.intensity"});
+  EXPECT_EQ(
+      shippedStandardCodes().ourCodes(),
+      (std::vector<std::string>{"intracranial_pressure.intensity", "radicular_pain.intensity"}));
   EXPECT_TRUE(shippedStandardCodes().unknownCodes(test::shippedModel()).empty());
 }
 

@@ -28,7 +28,7 @@ TEST(AvatarLaunchTest, TheLaunchPatientIsPublishedLatched) {
   EXPECT_EQ(status.last()->patient_id, "SDH-046");
   EXPECT_TRUE(status.last()->has_examination);
   EXPECT_EQ(status.last()->examination_time, kPostOperative);
-  EXPECT_EQ(status.last()->legend.size(), 5u);
+  EXPECT_EQ(status.last()->legend.size(), 6u);
   EXPECT_FALSE(status.last()->structures.empty());
 }
 

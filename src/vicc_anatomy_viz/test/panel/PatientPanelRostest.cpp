@@ -79,7 +79,7 @@ TEST_F(PatientPanelTest, AdoptsTheServersSelection) {
   auto* slider = child<QSlider>(*panel, "timeline_slider");
   ASSERT_TRUE(waitForPanel([&] {
     return patients->currentData().toString() == "SDH-046" && slider->maximum() == 1 &&
-           panel->findChildren<QCheckBox*>(QRegularExpression("^category_")).size() == 5;
+           panel->findChildren<QCheckBox*>(QRegularExpression("^category_")).size() == 6;
   })) << text(*panel, "message_label");
   EXPECT_EQ(slider->value(), 1);
   EXPECT_TRUE(child<QCheckBox>(*panel, "latest")->isChecked());

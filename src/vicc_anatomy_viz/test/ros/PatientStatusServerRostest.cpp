@@ -166,22 +166,22 @@ TEST_F(PatientStatusServerTest, ServesTheEncodedStatusAtOrBeforeADate) {
   const vicc_msgs::EncodedStatus& status = response.status;
   EXPECT_TRUE(status.has_examination);
   EXPECT_EQ(status.examination_time, "2023-03-06T09:15:00Z");
-  EXPECT_EQ(status.structures.size(), 6u);
+  EXPECT_EQ(status.structures.size(), 7u);  // Fig. 4.6 and the (illustrative) ICP 26 mmHg
   ASSERT_EQ(status.alternations.size(), 1u);
   EXPECT_EQ(status.alternations[0].structure_id, "dermatome_L5");
   EXPECT_EQ(status.alternations[0].side, "left");
-  EXPECT_EQ(status.legend.size(), 5u);
+  EXPECT_EQ(status.legend.size(), 6u);
   std::size_t proxies = 0;
   for (const auto& entry : status.structures) proxies += entry.proxy;
   EXPECT_EQ(proxies, 2u);  // both patellar reflexes
   const auto json = nlohmann::json::parse(response.json);
-  EXPECT_EQ(json["structures"].size(), 6u);
+  EXPECT_EQ(json["structures"].size(), 7u);
 
   request.hidden_categories = {"radicular_pain"};
   response = call<vicc_msgs::GetEncodedStatus>("get_encoded_status", request);
   ASSERT_TRUE(response.success);
   EXPECT_TRUE(response.status.alternations.empty());
-  EXPECT_EQ(response.status.structures.size(), 5u);
+  EXPECT_EQ(response.status.structures.size(), 6u);
 
   request.hidden_categories = {};
   request.date = "2023-03-10";

@@ -71,7 +71,7 @@ TEST_F(PatientCliTest, EncodeAsJsonAndText) {
   ASSERT_EQ(r.code, 0) << r.err;
   const auto json = nlohmann::json::parse(r.out);
   EXPECT_EQ(json["examination_time"], "2023-03-06T09:15:00Z");
-  EXPECT_EQ(json["structures"].size(), 6u);
+  EXPECT_EQ(json["structures"].size(), 7u);  // with the (illustrative) ICP of 26 mmHg
   EXPECT_EQ(json["alternations"].size(), 1u);
   r = run({"encode", "--patient", "SDH-046", "--date", "2023-03-06", "--json", "--hide",
            "radicular_pain"});

@@ -1,6 +1,7 @@
 #pragma once
 // The surfel model as sensor_msgs/PointCloud2: x y z normal_x normal_y normal_z radius
-// confidence (float32), the layout rviz and PCL understand.
+// confidence intensity (float32) and rgb (packed, a grey level shaded from the normal), the
+// layout rviz and PCL understand.
 
 #include <sensor_msgs/PointCloud2.h>
 #include <Eigen/Geometry>
