@@ -25,8 +25,8 @@
 #include <vicc_msgs/SaveModel.h>
 
 #include "vicc_fusion/frame_to_model.hpp"
-#include "vicc_fusion/ros/fusion_reconfigure.hpp"
 #include "vicc_fusion/fusion_parameters.hpp"
+#include "vicc_fusion/ros/fusion_reconfigure.hpp"
 #include "vicc_tracking/ros/tracker_ros.hpp"
 
 namespace vicc_fusion {
