@@ -3,13 +3,18 @@
 #include <vicc_msgs/RenderGlyph.h>
 
 #include <algorithm>
+#include <set>
 #include <stdexcept>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 #include "vicc_anatomy_viz/avatar/avatar_model.hpp"
 #include "vicc_anatomy_viz/errors.hpp"
 #include "vicc_anatomy_viz/ros/patient_status_server.hpp"
+#include "vicc_anatomy_viz/ros/patient_status_server_settings.hpp"
 #include "vicc_anatomy_viz/status_glyph/glyph_billboard.hpp"
+#include "vicc_common/ros_parameters.hpp"
 
 namespace vicc_anatomy_viz::ros_adapter {
 
@@ -32,37 +37,67 @@ Eigen::Vector3f anchorAboveHead(const AnatomyCatalog& catalog, float lift_m) {
   return *top + Eigen::Vector3f(0.f, 0.f, lift_m);
 }
 
-GlyphMarkerSettings readSettings(const ros::NodeHandle& private_nh, const AnatomyCatalog& catalog) {
-  GlyphMarkerSettings settings;
-  private_nh.param<std::string>("frame_id", settings.frame_id, settings.frame_id);
-  private_nh.param<float>("width_m", settings.width_m, settings.width_m);
-  private_nh.param<int>("resolution_px", settings.resolution_px, settings.resolution_px);
-  private_nh.param<float>("lift_m", settings.lift_m, settings.lift_m);
-  if (settings.frame_id.empty()) throw std::invalid_argument("~frame_id is empty");
-  if (!(settings.width_m > 0.f && settings.width_m < 5.f)) {
-    throw std::invalid_argument("~width_m must be within (0, 5) m");
+/// The node's own parameters, read beside the patient server's table (db, configs, view) by
+/// the same reader, so a wrong type or a typo is named (one parameter style for every node).
+struct MarkerNodeParameters {
+  status_glyph::GlyphBinding binding;
+  std::string status_topic = "/patient_status_server/status";
+  std::string render_service = "/glyph_server/render";
+  std::string frame_id = GlyphMarkerSettings{}.frame_id;
+  double width_m = GlyphMarkerSettings{}.width_m;
+  int resolution_px = GlyphMarkerSettings{}.resolution_px;
+  double lift_m = GlyphMarkerSettings{}.lift_m;
+  std::vector<double> anchor;  ///< empty: above the highest skin point
+
+  /// Throws std::invalid_argument naming the parameter.
+  void validate() const {
+    if (status_topic.empty()) throw std::invalid_argument("status_topic is empty");
+    if (render_service.empty()) throw std::invalid_argument("render_service is empty");
+    if (frame_id.empty()) throw std::invalid_argument("frame_id is empty");
+    if (!(width_m > 0.0 && width_m < 5.0)) {
+      throw std::invalid_argument("width_m must be within (0, 5) m");
+    }
+    if (resolution_px < 8 || resolution_px > 512) {
+      throw std::invalid_argument("resolution_px must be within 8..512");
+    }
+    if (!(lift_m >= 0.0 && lift_m < 1.0))
+      throw std::invalid_argument("lift_m must be within [0, 1) m");
+    if (!anchor.empty() && anchor.size() != 3) {
+      throw std::invalid_argument("anchor must be [x, y, z] in metres");
+    }
   }
-  if (settings.resolution_px < 8 || settings.resolution_px > 512) {
-    throw std::invalid_argument("~resolution_px must be within 8..512");
-  }
-  std::vector<double> anchor;
-  if (private_nh.getParam("anchor", anchor)) {
-    if (anchor.size() != 3) throw std::invalid_argument("~anchor must be [x, y, z] in metres");
-    settings.anchor = Eigen::Vector3d(anchor[0], anchor[1], anchor[2]).cast<float>();
-  } else {
-    settings.anchor = anchorAboveHead(catalog, settings.lift_m);
-  }
-  return settings;
+};
+
+template <typename Config, typename Visitor>
+std::enable_if_t<std::is_same_v<std::remove_const_t<Config>, MarkerNodeParameters>> visitParameters(
+    Config& config, Visitor& visit) {
+  visit("category", config.binding.category);
+  visit("property", config.binding.property);
+  visit("design", config.binding.design);
+  visit("value_variable", config.binding.value_variable);
+  visit("level_variable", config.binding.level_variable);
+  visit("status_topic", config.status_topic);
+  visit("render_service", config.render_service);
+  visit("frame_id", config.frame_id);
+  visit("width_m", config.width_m);
+  visit("resolution_px", config.resolution_px);
+  visit("lift_m", config.lift_m);
+  visit("anchor", config.anchor);
 }
 
-status_glyph::GlyphBinding readBinding(const ros::NodeHandle& private_nh) {
-  status_glyph::GlyphBinding binding;
-  private_nh.param<std::string>("category", binding.category, binding.category);
-  private_nh.param<std::string>("property", binding.property, binding.property);
-  private_nh.param<std::string>("design", binding.design, binding.design);
-  private_nh.param<std::string>("value_variable", binding.value_variable, binding.value_variable);
-  private_nh.param<std::string>("level_variable", binding.level_variable, binding.level_variable);
-  return binding;
+GlyphMarkerSettings markerSettings(const MarkerNodeParameters& parameters,
+                                   const AnatomyCatalog& catalog) {
+  GlyphMarkerSettings settings;
+  settings.frame_id = parameters.frame_id;
+  settings.width_m = static_cast<float>(parameters.width_m);
+  settings.resolution_px = parameters.resolution_px;
+  settings.lift_m = static_cast<float>(parameters.lift_m);
+  settings.anchor =
+      parameters.anchor.empty()
+          ? anchorAboveHead(catalog, settings.lift_m)
+          : Eigen::Vector3d(parameters.anchor[0], parameters.anchor[1], parameters.anchor[2])
+                .cast<float>();
+  return settings;
 }
 
 visualization_msgs::Marker baseMarker(const GlyphMarkerSettings& settings, const ros::Time& stamp,
@@ -123,16 +158,20 @@ visualization_msgs::Marker glyphMarker(const vicc_msgs::RenderGlyph::Response& r
 }  // namespace
 
 StatusGlyphMarkers::StatusGlyphMarkers(ros::NodeHandle& nh, ros::NodeHandle& private_nh) {
-  PatientStatusConfig config = readServerConfig(private_nh);
+  PatientStatusServerSettings server_settings = PatientStatusServerSettings::withDefaultPaths();
+  MarkerNodeParameters parameters;
+  std::set<std::string> read_names;
+  vicc_common::readRosParameters(private_nh, server_settings, read_names);
+  vicc_common::readRosParameters(private_nh, parameters, read_names);
+  vicc_common::warnUnknownRosParameters(private_nh, read_names);
+  PatientStatusConfig config = server_settings.serviceConfig();
   config.store.read_only = true;  // the server writes; this node only reads
   service_ = std::make_unique<PatientStatusService>(config);
-  binding_ = readBinding(private_nh);
+  binding_ = parameters.binding;
   binding_.validate(service_->model(), config.view_id);
-  settings_ = readSettings(private_nh, service_->model().anatomy());
-  std::string status_topic = "/patient_status_server/status";
-  std::string render_service = "/glyph_server/render";
-  private_nh.param<std::string>("status_topic", status_topic, status_topic);
-  private_nh.param<std::string>("render_service", render_service, render_service);
+  settings_ = markerSettings(parameters, service_->model().anatomy());
+  const std::string& status_topic = parameters.status_topic;
+  const std::string& render_service = parameters.render_service;
   render_client_ = nh.serviceClient<vicc_msgs::RenderGlyph>(render_service);
   markers_pub_ = private_nh.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
   status_sub_ = nh.subscribe(status_topic, 1, &StatusGlyphMarkers::onStatus, this);
