@@ -32,7 +32,8 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(vicc_glyphs_design_test
     test/design/GlyphDesignTest.cpp
     test/design/DesignBuildTest.cpp
-    test/design/IcpColourTest.cpp)
+    test/design/IcpColourTest.cpp
+    test/design/BoundaryTwinsTest.cpp)
   target_compile_options(vicc_glyphs_design_test PRIVATE ${VICC_WARNINGS})
   target_compile_definitions(vicc_glyphs_design_test PRIVATE
     VICC_GLYPHS_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config"
