@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <set>
 
+#include "boundary_twins.hpp"
 #include "gradient_channels.hpp"
 #include "vicc_glyphs/io/format_error.hpp"
 #include "vicc_glyphs/io/orzan_xml.hpp"
@@ -189,8 +190,9 @@ void applyGradientEncodings(DiffusionCurveImage& image, const std::vector<Active
 
 }  // namespace
 
-DiffusionCurveImage loadIcon(const GlyphDesign& design, int size_px) {
-  const int size = size_px > 0 ? size_px : design.size_px;
+namespace {
+
+DiffusionCurveImage importIcon(const GlyphDesign& design, int size) {
   std::string extension = std::filesystem::path(design.icon_path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
   if (extension == ".svg") {
@@ -201,6 +203,15 @@ DiffusionCurveImage loadIcon(const GlyphDesign& design, int size_px) {
   }
   if (extension == ".xml") return scaledToWidth(readOrzanXml(design.icon_path), size);
   throw FormatError(design.icon_path + ": design icons must be .svg or .xml (no raster import)");
+}
+
+}  // namespace
+
+DiffusionCurveImage loadIcon(const GlyphDesign& design, int size_px) {
+  DiffusionCurveImage icon = importIcon(design, size_px > 0 ? size_px : design.size_px);
+  // One curve per region boundary, so that a design's curve numbers name whole icon parts.
+  removeBoundaryTwins(icon);
+  return icon;
 }
 
 DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>& levels,

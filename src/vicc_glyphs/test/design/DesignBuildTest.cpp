@@ -4,25 +4,17 @@
 #include <cmath>
 #include <map>
 
+#include "shipped_designs.hpp"
 #include "vicc_glyphs/design/design_builder.hpp"
 #include "vicc_glyphs/pacemod/dashes.hpp"
-#include "vicc_glyphs/perception/perception_model_yaml.hpp"
 #include "vicc_glyphs/render/renderer.hpp"
 
 using namespace vicc_glyphs;
 using namespace vicc_glyphs::design;
+using vicc_glyphs::design::test::model;
+using vicc_glyphs::design::test::shipped;
 
 namespace {
-
-const perception::PerceptionModel& model() {
-  static const auto loaded = perception::loadPerceptionModel(std::string(VICC_GLYPHS_CONFIG_DIR) +
-                                                             "/perception_model.yaml");
-  return loaded;
-}
-
-GlyphDesign shipped(const std::string& name) {
-  return loadDesign(std::string(VICC_GLYPHS_DESIGNS_DIR) + "/" + name + ".yaml", model());
-}
 
 // Shoelace area of a curve's control polygon (close enough to compare sizes).
 double polygonSignedArea(const DiffusionCurve& curve) {
