@@ -16,6 +16,10 @@ deps:
 
 build: deps
 	$(CATKIN)
+	@# On a fresh clone catkin caches the test environment before any package has made
+	@# devel/lib/python3/dist-packages, so the python rostests would run without PYTHONPATH
+	@# (No module named 'vicc_msgs'): configure once more when the cache lacks it.
+	@grep -q "PYTHONPATH='[^']*devel/lib/python3/dist-packages" build/catkin_generated/setup_cached.sh || $(CATKIN) --force-cmake
 
 test: build
 	@rm -rf build/test_results
