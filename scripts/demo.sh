@@ -17,7 +17,11 @@ OUT=${OUT:-out}
 BAG=${BAG:-bags/short_test.bag}
 TRUTH=${BAG%.bag}_gt.tum
 SAMPLE=src/vicc_anatomy_viz/data/samples/fig4_6_patient.json
+# out/ holds the sample patient's database and pictures of their status: private (0700 / 0600),
+# as vicc_patient demands of a patient database's directory.
+umask 077
 mkdir -p "$OUT/glyphs"
+chmod 700 "$OUT"
 STEP=0
 step() { STEP=$((STEP + 1)); echo; echo "== [$STEP/6] $*"; }
 # Prints a dot every second while the command in the background ($1 = pid) runs.
