@@ -67,7 +67,13 @@ xvfb-run -a -s "-screen 0 1280x800x24" bash -c "
     sleep 1
     kill -0 \$LAUNCH 2>/dev/null || break
   done
-  sleep 4
+  # rviz (slow to start on a busy machine) must have subscribed to the model: the fusion node
+  # then sends it the final model within ~1 s of the last frame; give rviz time to draw it.
+  for _ in \$(seq 60); do
+    rostopic info /fusion/model 2>/dev/null | grep -q '/rviz' && break
+    sleep 1
+  done
+  sleep 5
   import -window root '$OUT/rviz_demo.png'
   kill -INT \$LAUNCH; wait \$LAUNCH
 " &

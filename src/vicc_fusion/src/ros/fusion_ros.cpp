@@ -44,6 +44,13 @@ FusionRos::FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
       reconfigure_(std::make_unique<FusionReconfigure>(ros::NodeHandle(private_nh, "fusion"),
                                                        "fusion", model_.config().fusion)) {
   model_pub_ = private_nh.advertise<sensor_msgs::PointCloud2>("model", 1, true);
+  if (settings_.publish_rate > 0.0) {
+    model_publication_ = std::make_unique<vicc_tracking::LatestStatePublisher>(
+        private_nh, model_pub_, 1.0 / settings_.publish_rate, [this](const ros::Time& stamp) {
+          model_pub_.publish(
+              toPointCloud2(model_.fusion().stableSurfels(), model_to_frame_, frame_id_, stamp));
+        });
+  }
   save_service_ = private_nh.advertiseService("save_model", &FusionRos::onSaveModel, this);
   vicc_tracking::PreprocessingConfig preprocessing =
       vicc_tracking::readTrackerConfig(private_nh, parameter_names_).preprocessing;
@@ -177,14 +184,7 @@ void FusionRos::afterFusion(const FusionFrameStats& stats, const ros::Time& stam
              model_.config().fusion.max_surfels);
     warned_full_ = true;
   }
-  if (settings_.publish_rate <= 0.0 || model_pub_.getNumSubscribers() == 0) return;
-  if (!last_publish_.isZero() && stamp > last_publish_ &&
-      (stamp - last_publish_).toSec() < 1.0 / settings_.publish_rate) {
-    return;
-  }
-  last_publish_ = stamp;
-  model_pub_.publish(
-      toPointCloud2(model_.fusion().stableSurfels(), model_to_frame_, frame_id_, stamp));
+  if (model_publication_) model_publication_->changed(stamp);
 }
 
 bool FusionRos::onSaveModel(vicc_msgs::SaveModel::Request& request,

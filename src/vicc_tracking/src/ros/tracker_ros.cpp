@@ -5,6 +5,7 @@
 
 #include "vicc_common/ros_parameters.hpp"
 #include "vicc_tracking/ros/conversions.hpp"
+#include "vicc_tracking/ros/latest_state_publisher.hpp"
 #include "vicc_tracking/ros/parameters.hpp"
 #include "vicc_tracking/ros/status_message.hpp"
 #include "vicc_tracking/ros/tracker_reconfigure.hpp"
@@ -25,6 +26,8 @@ TrackerRos::TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
   }
   odom_pub_ = private_nh.advertise<nav_msgs::Odometry>("odom", 10);
   path_pub_ = private_nh.advertise<nav_msgs::Path>("path", 1, true);
+  path_publication_ = std::make_unique<LatestStatePublisher>(
+      private_nh, path_pub_, 0.0, [this](const ros::Time&) { path_pub_.publish(path_); });
   status_pub_ = private_nh.advertise<vicc_msgs::TrackingStatus>("status", 50);
   // IMU at up to 400 Hz must not be dropped while a depth frame is processed.
   imu_sub_ =
@@ -287,7 +290,7 @@ void TrackerRos::publishPose(const Eigen::Isometry3d& camera_pose, const ros::Ti
   if (static_cast<int>(path_.poses.size()) > settings_.max_path_length) {
     path_.poses.erase(path_.poses.begin());
   }
-  if (path_pub_.getNumSubscribers() > 0) path_pub_.publish(path_);
+  path_publication_->changed(stamp);
 }
 
 }  // namespace vicc_tracking

@@ -6,8 +6,8 @@
 //   frame. Where the model does not cover the view yet, the tracker stays frame-to-frame.
 // - track: false: an external tracker publishes the camera pose on tf (map_frame -> depth
 //   frame); the node only fuses, with that pose at each depth stamp.
-// Both publish the stable model on ~model (PointCloud2, throttled, only with subscribers) and
-// serve ~save_model (binary PLY).
+// Both publish the stable model on ~model (PointCloud2, latched, throttled, only with
+// subscribers; the final model once the frames stop) and serve ~save_model (binary PLY).
 
 #include <deque>
 #include <memory>
@@ -27,6 +27,7 @@
 #include "vicc_fusion/frame_to_model.hpp"
 #include "vicc_fusion/fusion_parameters.hpp"
 #include "vicc_fusion/ros/fusion_reconfigure.hpp"
+#include "vicc_tracking/ros/latest_state_publisher.hpp"
 #include "vicc_tracking/ros/tracker_ros.hpp"
 
 namespace vicc_fusion {
@@ -68,7 +69,6 @@ class FusionRos {
   std::string frame_id_;                            ///< frame of the published model
   Eigen::Isometry3d model_to_frame_ = Eigen::Isometry3d::Identity();
   bool warned_full_ = false;
-  ros::Time last_publish_;
 
   // track: true
   std::unique_ptr<vicc_tracking::TrackerRos> tracker_;
@@ -86,6 +86,10 @@ class FusionRos {
   ros::Subscriber info_sub_;
 
   ros::Publisher model_pub_;
+  /// The stable model on model_pub_: throttled to publish_rate while frames arrive, the final
+  /// one once they stop (also to a subscriber that connects after the replay); null if
+  /// publish_rate <= 0.
+  std::unique_ptr<vicc_tracking::LatestStatePublisher> model_publication_;
   ros::ServiceServer save_service_;
 };
 

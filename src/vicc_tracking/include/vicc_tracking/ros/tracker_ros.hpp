@@ -25,6 +25,7 @@
 
 namespace vicc_tracking {
 
+class LatestStatePublisher;
 class TrackerReconfigure;
 
 class TrackerRos {
@@ -91,6 +92,7 @@ class TrackerRos {
   ros::Publisher path_pub_;
   ros::Publisher status_pub_;
   nav_msgs::Path path_;
+  std::unique_ptr<LatestStatePublisher> path_publication_;  ///< path_ on path_pub_, latest
 };
 
 }  // namespace vicc_tracking
