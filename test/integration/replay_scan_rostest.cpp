@@ -83,10 +83,12 @@ vicc_tracking::TimedPose timedPoseOf(const nav_msgs::Odometry& odom) {
 }
 
 /// A foreign lab's names for the drivers' topics (e.g. an OpenNI-style camera and a VIO
-/// dataset's IMU); the frames and /tf, /tf_static stay as recorded.
+/// dataset's IMU); the frames and /tf, /tf_static stay as recorded. The camera_info is not the
+/// depth topic's sibling (/camera/depth/camera_info, where image_transport looks): info_topic
+/// must reach the nodes through the launch files' remap of that derived name.
 const std::map<std::string, std::string> kForeignTopics = {
     {"/pico_flexx/image_depth", "/camera/depth/image_raw"},
-    {"/pico_flexx/camera_info", "/camera/depth/camera_info"},
+    {"/pico_flexx/camera_info", "/camera/calibration/depth_info"},
     {"/pico_flexx/image_mono16", "/camera/ir/image_raw"},
     {"/imu/data_raw", "/imu0"}};
 
