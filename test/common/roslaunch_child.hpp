@@ -1,6 +1,7 @@
 #pragma once
-// Shared by the rostests that run a launch file as a child process (replay.launch with
-// exit_at_end, SIGINT): start roslaunch, spin while it runs, and learn whether and how it ended.
+// Shared by the rostests that run a launch file or a tool as a child process (replay.launch
+// with exit_at_end, roslaunch --nodes, SIGINT, vicc_patient): start it, spin while it runs,
+// learn whether and how it ended and what it printed.
 
 #include <fcntl.h>
 #include <signal.h>
@@ -8,9 +9,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <ros/ros.h>
 
 namespace vicc_test {
@@ -79,6 +83,54 @@ inline bool waitForChildExit(pid_t child, ros::WallDuration limit, int& wait_sta
     waitpid(child, &wait_status, 0);
   }
   return ended;
+}
+
+/// The whole text of a file ("" if it cannot be read): what a child printed there.
+inline std::string readTextFile(const std::string& path) {
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+/// How a child run to its end went.
+struct ChildRun {
+  bool started = false;
+  bool ended = false;   ///< by itself within the limit (else it was stopped with SIGINT)
+  int wait_status = 0;  ///< as waitpid reports it
+  std::string printed;  ///< stdout and stderr, when an output file was given
+
+  /// The exit code; -1 if it did not end by itself or not normally.
+  int exitCode() const { return ended && WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1; }
+};
+
+/// Runs `arguments` (as startProcess) and spins until it ends or `limit` has passed; a child
+/// still running then is stopped with SIGINT. With `output_file`, `printed` is what it printed.
+inline ChildRun runToEnd(const std::vector<std::string>& arguments, ros::WallDuration limit,
+                         const std::string& output_file = "") {
+  ChildRun run;
+  const pid_t child = startProcess(arguments, output_file);
+  run.started = child != 0;
+  if (run.started) run.ended = waitForChildExit(child, limit, run.wait_status);
+  if (!output_file.empty()) run.printed = readTextFile(output_file);
+  return run;
+}
+
+/// Ctrl-C to a running roslaunch, and the checks of a clean stop: it ends within `limit` with
+/// exit code 0, and no node had to be escalated to SIGTERM (roslaunch waits 15 s per node
+/// before it does) or died. `output_file` holds what roslaunch printed.
+inline void expectCleanSigintStop(pid_t roslaunch, const std::string& output_file,
+                                  ros::WallDuration limit = ros::WallDuration(10.0)) {
+  int wait_status = 0;
+  const bool ended = interruptChild(roslaunch, limit, wait_status);
+  const std::string printed = readTextFile(output_file);
+  EXPECT_TRUE(ended) << "roslaunch did not end within " << limit.toSec() << " s of SIGINT:\n"
+                     << printed;
+  EXPECT_TRUE(WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0)
+      << "wait status " << wait_status << "\n"
+      << printed;
+  EXPECT_EQ(printed.find("escalating"), std::string::npos) << printed;
+  EXPECT_EQ(printed.find("has died"), std::string::npos) << printed;
 }
 
 }  // namespace vicc_test

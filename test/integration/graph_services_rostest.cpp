@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -125,26 +124,6 @@ TEST(GraphServices, RvizLoadsAllPlugins) {
   EXPECT_TRUE(vicc_test::nodeIsRegistered("/rviz")) << "rviz ended";
 }
 
-std::string readFile(const std::string& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-/// Runs `command` to its end; what it printed, and its exit code in `exit_code` (-1 if it
-/// did not end normally within a minute).
-std::string run(const std::vector<std::string>& command, const std::string& output,
-                int& exit_code) {
-  const pid_t child = vicc_test::startProcess(command, output);
-  int wait_status = 0;
-  exit_code = -1;
-  if (child != 0 && vicc_test::waitForChildExit(child, ros::WallDuration(60.0), wait_status) &&
-      WIFEXITED(wait_status))
-    exit_code = WEXITSTATUS(wait_status);
-  return readFile(output);
-}
-
 TEST(GraphServices, ClinicStopsOnSigint) {
   ASSERT_EQ(g_program_args.size(), 1u) << "usage: graph_services_rostest CLINIC_LAUNCH";
   const std::filesystem::path dir =
@@ -157,7 +136,7 @@ TEST(GraphServices, ClinicStopsOnSigint) {
   ASSERT_NE(roslaunch, 0) << "roslaunch could not be started";
   const bool up =
       ros::service::waitForService("/patient_status_server/record_examination", kServiceWait);
-  EXPECT_TRUE(up) << readFile(log);
+  EXPECT_TRUE(up) << vicc_test::readTextFile(log);
 
   vicc_msgs::RecordExamination record;
   record.request.patient_id = "SDH-046";
@@ -174,27 +153,22 @@ TEST(GraphServices, ClinicStopsOnSigint) {
   EXPECT_TRUE(up && ros::service::call("/patient_status_server/record_examination", record));
   EXPECT_TRUE(record.response.success) << record.response.message;
 
-  int wait_status = 0;
-  const bool ended = vicc_test::interruptChild(roslaunch, ros::WallDuration(10.0), wait_status);
-  const std::string printed = readFile(log);
-  EXPECT_TRUE(ended) << "roslaunch did not end within 10 s of SIGINT:\n" << printed;
-  EXPECT_TRUE(WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0)
-      << "wait status " << wait_status << "\n"
-      << printed;
-  EXPECT_EQ(printed.find("escalating"), std::string::npos) << printed;
-  EXPECT_EQ(printed.find("has died"), std::string::npos) << printed;
+  vicc_test::expectCleanSigintStop(roslaunch, log);
 
-  int exit_code = 0;
-  const std::string check = run({"rosrun", "vicc_anatomy_viz", "vicc_patient", "check", "--db", db},
-                                (dir / "check.log").string(), exit_code);
-  EXPECT_EQ(exit_code, 0) << "the database is not consistent after SIGINT:\n" << check;
-  const std::string list = run({"rosrun", "vicc_anatomy_viz", "vicc_patient", "list", "--db", db},
-                               (dir / "list.log").string(), exit_code);
-  EXPECT_EQ(exit_code, 0) << list;
-  EXPECT_NE(list.find("SDH-046"), std::string::npos) << list;
-  EXPECT_NE(list.find("2023-03-20"), std::string::npos)
+  const ros::WallDuration tool_limit(60.0);
+  const vicc_test::ChildRun check =
+      vicc_test::runToEnd({"rosrun", "vicc_anatomy_viz", "vicc_patient", "check", "--db", db},
+                          tool_limit, (dir / "check.log").string());
+  EXPECT_EQ(check.exitCode(), 0) << "the database is not consistent after SIGINT:\n"
+                                 << check.printed;
+  const vicc_test::ChildRun list =
+      vicc_test::runToEnd({"rosrun", "vicc_anatomy_viz", "vicc_patient", "list", "--db", db},
+                          tool_limit, (dir / "list.log").string());
+  EXPECT_EQ(list.exitCode(), 0) << list.printed;
+  EXPECT_NE(list.printed.find("SDH-046"), std::string::npos) << list.printed;
+  EXPECT_NE(list.printed.find("2023-03-20"), std::string::npos)
       << "the examination recorded before SIGINT is not in the database:\n"
-      << list;
+      << list.printed;
   std::filesystem::remove_all(dir);
 }
 

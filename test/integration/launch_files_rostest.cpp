@@ -6,8 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -23,13 +21,6 @@ namespace {
 
 std::vector<std::string> g_program_args;  // positional, after gtest and ros::init removed theirs
 
-std::string readFile(const std::string& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 /// Runs roslaunch with `arguments` to its end (at most `limit`); what it printed.
 std::string runRoslaunch(const std::vector<std::string>& arguments, int& wait_status,
                          ros::WallDuration limit = ros::WallDuration(60.0)) {
@@ -38,13 +29,12 @@ std::string runRoslaunch(const std::vector<std::string>& arguments, int& wait_st
                                  .string();
   std::vector<std::string> command = {"roslaunch"};
   command.insert(command.end(), arguments.begin(), arguments.end());
-  const pid_t child = vicc_test::startRoslaunch(command, output);
-  EXPECT_NE(child, 0) << "roslaunch could not be started";
-  if (child == 0) return "";
-  EXPECT_TRUE(vicc_test::waitForChildExit(child, limit, wait_status)) << "roslaunch did not end";
-  const std::string printed = readFile(output);
+  const vicc_test::ChildRun run = vicc_test::runToEnd(command, limit, output);
+  EXPECT_TRUE(run.started) << "roslaunch could not be started";
+  EXPECT_TRUE(!run.started || run.ended) << "roslaunch did not end";
+  wait_status = run.wait_status;
   std::filesystem::remove(output);
-  return printed;
+  return run.printed;
 }
 
 struct LaunchCase {

@@ -14,7 +14,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -83,10 +82,12 @@ vicc_tracking::TimedPose timedPoseOf(const nav_msgs::Odometry& odom) {
 }
 
 /// A foreign lab's names for the drivers' topics (e.g. an OpenNI-style camera and a VIO
-/// dataset's IMU); the frames and /tf, /tf_static stay as recorded.
+/// dataset's IMU); the frames and /tf, /tf_static stay as recorded. The camera_info is not the
+/// depth topic's sibling (/camera/depth/camera_info, where image_transport looks): info_topic
+/// must reach the nodes through the launch files' remap of that derived name.
 const std::map<std::string, std::string> kForeignTopics = {
     {"/pico_flexx/image_depth", "/camera/depth/image_raw"},
-    {"/pico_flexx/camera_info", "/camera/depth/camera_info"},
+    {"/pico_flexx/camera_info", "/camera/calibration/depth_info"},
     {"/pico_flexx/image_mono16", "/camera/ir/image_raw"},
     {"/imu/data_raw", "/imu0"}};
 
@@ -103,13 +104,6 @@ void renameTopics(const std::string& input, const std::string& output,
     (*header)["topic"] = topic;
     out.write(topic, message.getTime(), message, header);
   }
-}
-
-std::string readFile(const std::string& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
 }
 
 class ReplayScan : public ::testing::Test {
@@ -134,15 +128,11 @@ class ReplayScan : public ::testing::Test {
   }
 
   /// Runs replay.launch (exit_at_end) to its end; a failure if it did not end or failed.
-  void replayToTheEnd(std::vector<std::string> command) {
-    const pid_t roslaunch = vicc_test::startRoslaunch(command);
-    ASSERT_NE(roslaunch, 0) << "roslaunch could not be started";
-    int wait_status = 0;
-    const bool ended =
-        vicc_test::waitForChildExit(roslaunch, ros::WallDuration(150.0), wait_status);
-    ASSERT_TRUE(ended) << "replay.launch did not end with the recording";
-    EXPECT_TRUE(WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0)
-        << "roslaunch failed, wait status " << wait_status;
+  void replayToTheEnd(const std::vector<std::string>& command) {
+    const vicc_test::ChildRun replay = vicc_test::runToEnd(command, ros::WallDuration(150.0));
+    ASSERT_TRUE(replay.started) << "roslaunch could not be started";
+    ASSERT_TRUE(replay.ended) << "replay.launch did not end with the recording";
+    EXPECT_EQ(replay.exitCode(), 0) << "roslaunch failed, wait status " << replay.wait_status;
     // ~model is published on the recording's clock: the last cloud is from its final still
     // second, after all motion was fused.
     ros::WallDuration(0.5).sleep();
@@ -239,18 +229,10 @@ TEST_F(ReplayScan, StaysUpSavesAndStopsOnSigint) {
   EXPECT_TRUE(save.response.success) << save.response.message;
   EXPECT_GT(save.response.surfels, 5000u);
   EXPECT_TRUE(std::filesystem::exists(save.request.path));
-  EXPECT_NE(readFile(save.request.path).rfind("ply\n", 0), std::string::npos) << "not a PLY file";
+  EXPECT_NE(vicc_test::readTextFile(save.request.path).rfind("ply\n", 0), std::string::npos)
+      << "not a PLY file";
 
-  int wait_status = 0;
-  // roslaunch waits up to 15 s per node before escalating to SIGTERM: 10 s means clean.
-  const bool ended = vicc_test::interruptChild(roslaunch, ros::WallDuration(10.0), wait_status);
-  const std::string printed = readFile(output);
-  EXPECT_TRUE(ended) << "roslaunch did not end within 10 s of SIGINT:\n" << printed;
-  EXPECT_TRUE(WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0)
-      << "wait status " << wait_status << "\n"
-      << printed;
-  EXPECT_EQ(printed.find("escalating"), std::string::npos) << printed;
-  EXPECT_EQ(printed.find("has died"), std::string::npos) << printed;
+  vicc_test::expectCleanSigintStop(roslaunch, output);
   EXPECT_FALSE(vicc_test::nodeIsRegistered("/fusion")) << "the fusion node outlived SIGINT";
 }
 

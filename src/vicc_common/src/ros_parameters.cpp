@@ -28,23 +28,35 @@ std::string describeRosParameter(const ros::NodeHandle& nh, const std::string& n
   }
 }
 
+namespace {
+
+bool isUnder(const std::string& name, const std::string& ns) {
+  const std::string prefix = ns == "/" ? "/" : ns + "/";
+  return name.compare(0, prefix.size(), prefix) == 0;
+}
+
+}  // namespace
+
 std::vector<std::string> unknownRosParameters(const ros::NodeHandle& nh,
-                                              const std::set<std::string>& known) {
+                                              const std::set<std::string>& known,
+                                              const std::vector<std::string>& foreign) {
   std::vector<std::string> all_names;
   std::vector<std::string> unknown;
   if (!ros::param::getParamNames(all_names)) return unknown;  // no master: nothing to check
-  const std::string prefix = nh.getNamespace() == "/" ? "/" : nh.getNamespace() + "/";
   for (const std::string& name : all_names) {
-    if (name.compare(0, prefix.size(), prefix) != 0) continue;
-    if (known.count(name) == 0) unknown.push_back(name);
+    if (!isUnder(name, nh.getNamespace()) || known.count(name) > 0) continue;
+    const bool foreign_name = std::any_of(foreign.begin(), foreign.end(),
+                                          [&](const std::string& ns) { return isUnder(name, ns); });
+    if (!foreign_name) unknown.push_back(name);
   }
   std::sort(unknown.begin(), unknown.end());
   return unknown;
 }
 
 std::vector<std::string> warnUnknownRosParameters(const ros::NodeHandle& nh,
-                                                  const std::set<std::string>& known) {
-  const std::vector<std::string> unknown = unknownRosParameters(nh, known);
+                                                  const std::set<std::string>& known,
+                                                  const std::vector<std::string>& foreign) {
+  const std::vector<std::string> unknown = unknownRosParameters(nh, known, foreign);
   if (unknown.empty()) return unknown;
   std::string names;
   for (const std::string& name : unknown) names += (names.empty() ? "" : ", ") + name;

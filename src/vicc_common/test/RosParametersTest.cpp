@@ -79,6 +79,9 @@ TEST(RosParameters, UnknownParametersInTheNamespaceAreNamed) {
   std::set<std::string> good_names;
   readFrom("good", good_names);
   EXPECT_TRUE(vicc_common::unknownRosParameters(ros::NodeHandle("~good"), good_names).empty());
+  // Another library's namespace under the node's (an image_transport publisher's) is its own.
+  EXPECT_EQ(vicc_common::unknownRosParameters(typo_nh, read_names, {privateName("typo/inner")}),
+            std::vector<std::string>{privateName("typo/cuont")});
 }
 
 }  // namespace

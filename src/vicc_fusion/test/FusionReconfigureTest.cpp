@@ -1,5 +1,6 @@
 // The dynamic_reconfigure side of the fusion thresholds: the .cfg defaults are
-// SurfelFusionConfig's, the conversions carry every field both ways and keep the start-up ones.
+// SurfelFusionConfig's, the table-driven conversions carry every field both ways and keep the
+// start-up ones.
 #include <gtest/gtest.h>
 
 #include "vicc_fusion/ros/fusion_reconfigure.hpp"
@@ -8,7 +9,8 @@ namespace vicc_fusion {
 namespace {
 
 TEST(FusionReconfigureTest, CfgDefaultsAreTheConfigDefaults) {
-  const SurfelFusionConfig fusion = fromTuning(FusionTuningConfig::__getDefault__(), {});
+  const SurfelFusionConfig fusion =
+      vicc_tracking::fromTuning(FusionTuningConfig::__getDefault__(), SurfelFusionConfig{});
   const SurfelFusionConfig expected;
   EXPECT_EQ(fusion.max_depth_difference, expected.max_depth_difference);
   EXPECT_EQ(fusion.max_normal_angle_deg, expected.max_normal_angle_deg);
@@ -34,7 +36,8 @@ TEST(FusionReconfigureTest, ConversionsCarryEveryFieldAndKeepTheStartUpOnes) {
   base.supersampling = 2;
   base.max_surfels = 1234;
   base.sort_interval = 0;
-  const SurfelFusionConfig back = fromTuning(toTuning(tuned), base);
+  const SurfelFusionConfig back =
+      vicc_tracking::fromTuning(vicc_tracking::toTuning<FusionTuningConfig>(tuned), base);
   EXPECT_EQ(back.max_depth_difference, 0.02);
   EXPECT_EQ(back.max_normal_angle_deg, 25.0);
   EXPECT_EQ(back.max_radius_growth, 0.7);

@@ -9,7 +9,7 @@ add_library(vicc_glyphs_server src/ros/glyph_server.cpp)
 target_compile_options(vicc_glyphs_server PRIVATE ${VICC_WARNINGS})
 # Default designs and perception model: share/vicc_glyphs (vicc_paths), in devel and install.
 target_link_libraries(vicc_glyphs_server vicc_glyphs_design vicc_glyphs_ros vicc_glyphs_render
-  vicc_paths ${catkin_LIBRARIES})
+  vicc_paths vicc_common_ros_params ${catkin_LIBRARIES})
 add_dependencies(vicc_glyphs_server ${catkin_EXPORTED_TARGETS})
 
 add_executable(glyph_server src/ros/glyph_server_node.cpp)

@@ -2,7 +2,6 @@
 // reports it or exports its meshes.
 //   vicc_avatar_model [--manifest FILE] [--anatomy FILE] --report
 //   vicc_avatar_model [--manifest FILE] [--anatomy FILE] --export DIR
-#include <cstdio>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -12,60 +11,64 @@
 #include "vicc_anatomy_viz/avatar/avatar_report.hpp"
 #include "vicc_anatomy_viz/errors.hpp"
 #include "vicc_anatomy_viz/patient_status_service.hpp"
+#include "vicc_common/command_line.hpp"
 
 namespace {
 
-constexpr const char* kUsage =
-    "usage: vicc_avatar_model [--manifest FILE] [--anatomy FILE] (--report | --export DIR)\n";
+namespace cli = vicc_common::cli;
 
-struct Options {
-  std::string manifest = vicc_anatomy_viz::avatar::defaultAvatarManifestPath();
-  std::string anatomy = vicc_anatomy_viz::defaultAnatomyConfigPath();
-  bool report = false;
-  std::string export_directory;
+const std::vector<cli::OptionSpec> kOptionSpecs = {
+    {"manifest", "FILE", "avatar manifest (default: the package's)"},
+    {"anatomy", "FILE", "anatomy catalogue (default: the package's)"},
+    {"report", "", "print the model's structures, regions and landmarks"},
+    {"export", "DIR", "write one PLY file per structure and region into DIR"},
 };
 
-bool parse(const std::vector<std::string>& arguments, Options& options) {
-  for (std::size_t i = 0; i < arguments.size(); ++i) {
-    const std::string& argument = arguments[i];
-    const bool has_value = i + 1 < arguments.size();
-    if (argument == "--report") {
-      options.report = true;
-    } else if (argument == "--manifest" && has_value) {
-      options.manifest = arguments[++i];
-    } else if (argument == "--anatomy" && has_value) {
-      options.anatomy = arguments[++i];
-    } else if (argument == "--export" && has_value) {
-      options.export_directory = arguments[++i];
-    } else {
-      std::cerr << "vicc_avatar_model: unexpected argument '" << argument << "'\n" << kUsage;
-      return false;
-    }
+std::string usage() {
+  return cli::helpText(
+      "vicc_avatar_model [--manifest FILE] [--anatomy FILE] (--report | --export DIR)",
+      "Builds the avatar model offline (the rviz display's core) and reports or exports it.\n"
+      "Exit code 0 on success, 1 on error, 2 on a usage error.",
+      kOptionSpecs);
+}
+
+int run(const std::vector<std::string>& args) {
+  using namespace vicc_anatomy_viz;
+  const cli::ParsedArguments options = cli::parseArguments(args, kOptionSpecs);
+  if (!options.positional.empty()) {
+    throw cli::UsageError("unexpected argument '" + options.positional.front() + "'");
   }
-  if (!options.report && options.export_directory.empty()) {
-    std::cerr << kUsage;
-    return false;
+  const std::string export_directory = options.value("export");
+  if (!options.flag("report") && export_directory.empty()) {
+    throw cli::UsageError("--report or --export DIR is needed");
   }
-  return true;
+  const AnatomyCatalog catalog =
+      AnatomyCatalog::load(options.value("anatomy", defaultAnatomyConfigPath()));
+  const avatar::AvatarBuild build =
+      avatar::buildAvatar(options.value("manifest", avatar::defaultAvatarManifestPath()), catalog);
+  if (options.flag("report")) avatar::writeReport(build, std::cout);
+  if (!export_directory.empty()) {
+    const std::size_t files = avatar::exportPly(build.model, export_directory);
+    std::cout << "exported " << files << " PLY files to " << export_directory << "\n";
+  }
+  return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  using namespace vicc_anatomy_viz;
-  Options options;
-  if (!parse(std::vector<std::string>(argv + 1, argv + argc), options)) return 2;
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
+    std::cout << usage();
+    return 0;
+  }
   try {
-    const AnatomyCatalog catalog = AnatomyCatalog::load(options.anatomy);
-    const avatar::AvatarBuild build = avatar::buildAvatar(options.manifest, catalog);
-    if (options.report) avatar::writeReport(build, std::cout);
-    if (!options.export_directory.empty()) {
-      const std::size_t files = avatar::exportPly(build.model, options.export_directory);
-      std::cout << "exported " << files << " PLY files to " << options.export_directory << "\n";
-    }
+    return run(args);
+  } catch (const cli::UsageError& error) {
+    std::cerr << "vicc_avatar_model: " << error.what() << "\n" << usage();
+    return 2;
   } catch (const std::exception& error) {
     std::cerr << "vicc_avatar_model: " << error.what() << "\n";
     return 1;
   }
-  return 0;
 }

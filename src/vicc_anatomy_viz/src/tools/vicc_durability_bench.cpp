@@ -14,6 +14,7 @@
 #include "vicc_anatomy_viz/errors.hpp"
 #include "vicc_anatomy_viz/schema_migrations.hpp"
 #include "vicc_anatomy_viz/sqlite_connection.hpp"
+#include "vicc_common/command_line.hpp"
 
 namespace {
 
@@ -108,54 +109,80 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
+namespace cli = vicc_common::cli;
+
+const std::vector<cli::OptionSpec> kOptionSpecs = {
+    {"dir", "DIR", "where the databases are written: on the disk to measure, not tmpfs"},
+    {"records", "N", "single-examination transactions per repetition (default 200)"},
+    {"bulk", "M", "examinations in the bulk import transaction (default 2000)"},
+    {"repeat", "R", "repetitions, the two settings alternating (default 5)"},
+};
+
+std::string usage() {
+  return cli::helpText("vicc_durability_bench --dir DIR [--records N] [--bulk M] [--repeat R]",
+                       "Times PRAGMA synchronous = FULL against NORMAL (CSV on stdout).\n"
+                       "Exit code 0 on success, 1 on error, 2 on a usage error.",
+                       kOptionSpecs);
+}
+
+struct Options {
+  std::string directory;
+  int records = 200, bulk = 2000, repeat = 5;
+};
+
+/// Throws cli::UsageError naming what is wrong.
+Options parseOptions(const std::vector<std::string>& args) {
+  const cli::ParsedArguments parsed = cli::parseArguments(args, kOptionSpecs);
+  if (!parsed.positional.empty()) {
+    throw cli::UsageError("unexpected argument '" + parsed.positional.front() + "'");
+  }
+  Options options;
+  options.directory = parsed.required("dir", "vicc_durability_bench");
+  options.records = parsed.integer("records", options.records, 1, 10000000);
+  options.bulk = parsed.integer("bulk", options.bulk, 1, 10000000);
+  options.repeat = parsed.integer("repeat", options.repeat, 1, 10000);
+  return options;
+}
+
+int run(const Options& options) {
+  const int records = options.records, bulk = options.bulk, repeat = options.repeat;
+  const std::string path = options.directory + "/durability_bench.db";
+  std::unique_ptr<SqliteConnection> connection;
+  const std::vector<std::string> settings = {"NORMAL", "FULL"};
+  std::vector<std::vector<double>> single(settings.size()), imports(settings.size());
+  for (int r = 0; r < repeat; ++r) {
+    for (std::size_t s = 0; s < settings.size(); ++s) {
+      openFresh(path, settings[s], connection);
+      single[s].push_back(singleTransactionMs(*connection, records));
+      openFresh(path, settings[s], connection);
+      imports[s].push_back(bulkImportMs(*connection, bulk));
+    }
+  }
+  connection.reset();
+  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(path + suffix);
+  std::printf("synchronous,record_ms_median,bulk_import_ms_median,records,bulk,repeat\n");
+  for (std::size_t s = 0; s < settings.size(); ++s) {
+    std::printf("%s,%.3f,%.1f,%d,%d,%d\n", settings[s].c_str(), median(single[s]),
+                median(imports[s]), records, bulk, repeat);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string directory;
-  int records = 200, bulk = 2000, repeat = 5;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--dir") {
-      directory = value;
-    } else if (key == "--records") {
-      records = std::max(1, std::stoi(value));
-    } else if (key == "--bulk") {
-      bulk = std::max(1, std::stoi(value));
-    } else if (key == "--repeat") {
-      repeat = std::max(1, std::stoi(value));
-    } else {
-      std::cerr << "unknown option " << key << "\n";
-      return 2;
-    }
-  }
-  if (directory.empty()) {
-    std::cerr << "usage: vicc_durability_bench --dir DIR (on the disk to measure, not tmpfs) "
-                 "[--records N] [--bulk M] [--repeat R]\n";
-    return 2;
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
+    std::cout << usage();
+    return 0;
   }
   try {
-    const std::string path = directory + "/durability_bench.db";
-    std::unique_ptr<SqliteConnection> connection;
-    const std::vector<std::string> settings = {"NORMAL", "FULL"};
-    std::vector<std::vector<double>> single(settings.size()), imports(settings.size());
-    for (int r = 0; r < repeat; ++r) {
-      for (std::size_t s = 0; s < settings.size(); ++s) {
-        openFresh(path, settings[s], connection);
-        single[s].push_back(singleTransactionMs(*connection, records));
-        openFresh(path, settings[s], connection);
-        imports[s].push_back(bulkImportMs(*connection, bulk));
-      }
-    }
-    connection.reset();
-    for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(path + suffix);
-    std::printf("synchronous,record_ms_median,bulk_import_ms_median,records,bulk,repeat\n");
-    for (std::size_t s = 0; s < settings.size(); ++s) {
-      std::printf("%s,%.3f,%.1f,%d,%d,%d\n", settings[s].c_str(), median(single[s]),
-                  median(imports[s]), records, bulk, repeat);
-    }
+    return run(parseOptions(args));
+  } catch (const cli::UsageError& e) {
+    std::cerr << "vicc_durability_bench: " << e.what() << "\n" << usage();
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "vicc_durability_bench: " << e.what() << "\n";
     return 1;
   }
-  return 0;
 }

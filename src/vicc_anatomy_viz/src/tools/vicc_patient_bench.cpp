@@ -13,6 +13,7 @@
 #include "vicc_anatomy_viz/encoded_status_json.hpp"
 #include "vicc_anatomy_viz/patient_status_service.hpp"
 #include "vicc_anatomy_viz/record_store.hpp"
+#include "vicc_common/command_line.hpp"
 
 namespace {
 
@@ -40,30 +41,36 @@ double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-/// Returns false (after a message) on a usage error.
-bool parseOptions(int argc, char** argv, Options& options) {
+namespace cli = vicc_common::cli;
+
+const std::vector<cli::OptionSpec> kOptionSpecs = {
+    {"db", "FILE", "record database (vicc_patient's)"},
+    {"patient", "P", "patient whose examination is encoded"},
+    {"date", "D", "examination at or before this date (default: the latest)"},
+    {"repeat", "N", "encode repetitions (default 200; loads and opens a tenth as many)"},
+};
+
+std::string usage() {
+  return cli::helpText("vicc_patient_bench --db FILE --patient P [--date D] [--repeat N]",
+                       "In-process timings of the encode path for bench/patient_status (JSON "
+                       "on stdout).\nExit code 0 on success, 1 on error, 2 on a usage error.",
+                       kOptionSpecs);
+}
+
+/// Throws cli::UsageError naming what is wrong.
+Options parseOptions(const std::vector<std::string>& args) {
+  const cli::ParsedArguments parsed = cli::parseArguments(args, kOptionSpecs);
+  if (!parsed.positional.empty()) {
+    throw cli::UsageError("unexpected argument '" + parsed.positional.front() + "'");
+  }
+  Options options;
   options.config.encoding_config = vicc_anatomy_viz::defaultEncodingConfigPath();
   options.config.anatomy_config = vicc_anatomy_viz::defaultAnatomyConfigPath();
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--db") {
-      options.config.store.path = value;
-    } else if (key == "--patient") {
-      options.patient = value;
-    } else if (key == "--date") {
-      options.date = value;
-    } else if (key == "--repeat") {
-      options.repeat = std::max(1, std::stoi(value));
-    } else {
-      std::cerr << "unknown option " << key << "\n";
-      return false;
-    }
-  }
-  if (options.config.store.path.empty() || options.patient.empty()) {
-    std::cerr << "usage: vicc_patient_bench --db FILE --patient P [--date D] [--repeat N]\n";
-    return false;
-  }
-  return true;
+  options.config.store.path = parsed.required("db", "vicc_patient_bench");
+  options.patient = parsed.required("patient", "vicc_patient_bench");
+  options.date = parsed.value("date");
+  options.repeat = parsed.integer("repeat", options.repeat, 1, 1000000);
+  return options;
 }
 
 /// Times `once` a tenth as often as the encode repetitions (each is a whole load or open).
@@ -123,10 +130,16 @@ int run(const Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
+    std::cout << usage();
+    return 0;
+  }
   try {
-    Options options;
-    if (!parseOptions(argc, argv, options)) return 2;
-    return run(options);
+    return run(parseOptions(args));
+  } catch (const cli::UsageError& e) {
+    std::cerr << "vicc_patient_bench: " << e.what() << "\n" << usage();
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "vicc_patient_bench: " << e.what() << "\n";
     return 1;

@@ -86,12 +86,16 @@ void readRosParameters(const ros::NodeHandle& nh, Config& config,
   reader.validate(config);
 }
 
-/// The parameters under `nh`'s namespace whose names are not in `known` (resolved names).
+/// The parameters under `nh`'s namespace whose names are not in `known` (resolved names),
+/// leaving out those under `foreign` (resolved namespaces another library keeps its
+/// parameters in, e.g. an image_transport publisher's).
 std::vector<std::string> unknownRosParameters(const ros::NodeHandle& nh,
-                                              const std::set<std::string>& known);
+                                              const std::set<std::string>& known,
+                                              const std::vector<std::string>& foreign = {});
 
 /// ROS_WARN naming the unknown parameters under `nh` (they are ignored); returns them.
 std::vector<std::string> warnUnknownRosParameters(const ros::NodeHandle& nh,
-                                                  const std::set<std::string>& known);
+                                                  const std::set<std::string>& known,
+                                                  const std::vector<std::string>& foreign = {});
 
 }  // namespace vicc_common

@@ -1,5 +1,6 @@
 #include "vicc_fusion/ros/fusion_ros.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "vicc_common/parameter_names.hpp"
@@ -58,7 +59,6 @@ FusionRos::FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   preprocessing.pyramid_levels = 1;
   if (!settings_.track || settings_.use_intensity) {
     preprocessor_ = std::make_unique<vicc_tracking::DepthPreprocessor>(preprocessing);
-    info_sub_ = nh.subscribe("depth/camera_info", 2, &FusionRos::onCameraInfo, this);
   }
   if (settings_.use_intensity) {
     intensity_sub_ = nh.subscribe("intensity/image", 5, &FusionRos::onIntensity, this);
@@ -73,6 +73,9 @@ FusionRos::FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
                const sensor_msgs::Image& depth, const Eigen::Isometry3d& map_alignment) {
           onTrackedFrame(tracker, report, depth, map_alignment);
         });
+    if (settings_.use_intensity) {
+      tracker_->setFrameGate([this](const ros::Time& stamp) { return grayImageArrived(stamp); });
+    }
     ROS_INFO("fusion: tracking %s against the model, publishing ~model in %s",
              model_.config().track_against_model ? "frame-to-model" : "frame-to-frame",
              frame_id_.c_str());
@@ -81,13 +84,9 @@ FusionRos::FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
   frame_id_ = settings_.map_frame;
   tf_buffer_ = std::make_unique<tf2_ros::Buffer>();
   tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_);
-  // Depth through image_transport (raw, or e.g. compressedDepth with ~image_transport).
-  image_transport::ImageTransport image_transport(nh);
-  depth_sub_ = std::make_unique<image_transport::SubscriberFilter>(
-      image_transport, "depth/image", settings_.pose_queue_size,
-      image_transport::TransportHints("raw", ros::TransportHints(), private_nh));
+  // Paired depth frames wait in the message filter until their pose is on tf.
   depth_pose_filter_ = std::make_unique<tf2_ros::MessageFilter<sensor_msgs::Image>>(
-      *depth_sub_, *tf_buffer_, frame_id_, settings_.pose_queue_size, nh);
+      *tf_buffer_, frame_id_, settings_.pose_queue_size, nh);
   depth_pose_filter_->registerCallback(&FusionRos::onDepth, this);
   depth_pose_filter_->registerFailureCallback(
       [](const sensor_msgs::ImageConstPtr& depth,
@@ -96,8 +95,15 @@ FusionRos::FusionRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh)
                           "fusion: no pose on tf for the depth frame at %.3f (%s); not fused",
                           depth->header.stamp.toSec(), depth->header.frame_id.c_str());
       });
-  ROS_INFO("fusion: fusing %s with the poses on tf (%s -> depth frame)",
-           depth_sub_->getTopic().c_str(), frame_id_.c_str());
+  // Depth through image_transport (raw, or e.g. compressedDepth with ~image_transport).
+  camera_sub_ = std::make_unique<vicc_tracking::CameraSubscription>(
+      nh, "depth/image", settings_.pose_queue_size,
+      image_transport::TransportHints("raw", ros::TransportHints(), private_nh), "fusion",
+      [this](const sensor_msgs::ImageConstPtr& depth, const sensor_msgs::CameraInfoConstPtr& info) {
+        onCameraFrame(depth, info);
+      });
+  ROS_INFO("fusion: fusing %s (camera_info on %s) with the poses on tf (%s -> depth frame)",
+           camera_sub_->imageTopic().c_str(), camera_sub_->infoTopic().c_str(), frame_id_.c_str());
 }
 
 void FusionRos::onTrackedFrame(vicc_tracking::Tracker& tracker,
@@ -106,6 +112,7 @@ void FusionRos::onTrackedFrame(vicc_tracking::Tracker& tracker,
                                const Eigen::Isometry3d& map_alignment) {
   if (const auto tuning = reconfigure_->takeChange()) model_.setFusionConfig(*tuning);
   try {
+    if (preprocessor_) useCamera(tracker.camera());  // the gray image's undistortion
     const std::optional<cv::Mat1f> intensity = intensityFor(depth.header.stamp);
     const FrameToModelStep step =
         model_.afterFrame(tracker, report, intensity ? &*intensity : nullptr);
@@ -116,24 +123,41 @@ void FusionRos::onTrackedFrame(vicc_tracking::Tracker& tracker,
   }
 }
 
-void FusionRos::onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info) {
-  try {
-    const vicc_tracking::CameraModel camera = vicc_tracking::cameraModelFromInfo(*info);
-    if (!camera_ || *camera_ != camera) {
-      preprocessor_->setCamera(camera);
-      camera_ = camera;
-    }
-  } catch (const std::exception& error) {
-    ROS_WARN_THROTTLE(kWarnPeriod, "fusion: invalid camera_info ignored: %s", error.what());
+void FusionRos::useCamera(const vicc_tracking::CameraModel& camera) {
+  if (camera_ && *camera_ == camera) return;
+  preprocessor_->setCamera(camera);
+  camera_ = camera;
+}
+
+void FusionRos::onCameraFrame(const sensor_msgs::ImageConstPtr& depth,
+                              const sensor_msgs::CameraInfoConstPtr& info) {
+  waiting_infos_.push_back(info);
+  // The message filter keeps at most pose_queue_size frames; one more covers the newest.
+  while (static_cast<int>(waiting_infos_.size()) > settings_.pose_queue_size + 1) {
+    waiting_infos_.pop_front();
   }
+  depth_pose_filter_->add(depth);
 }
 
 void FusionRos::onDepth(const sensor_msgs::ImageConstPtr& depth) {
   if (const auto tuning = reconfigure_->takeChange()) model_.setFusionConfig(*tuning);
-  if (!camera_) {
-    ROS_WARN_THROTTLE(kWarnPeriod, "fusion: no valid camera_info yet; depth dropped");
+  const auto info = std::find_if(waiting_infos_.begin(), waiting_infos_.end(),
+                                 [&](const sensor_msgs::CameraInfoConstPtr& info) {
+                                   return info->header.stamp == depth->header.stamp;
+                                 });
+  if (info == waiting_infos_.end()) {  // only if the message filter kept frames longer
+    ROS_WARN_THROTTLE(kWarnPeriod, "fusion: the camera_info of the depth frame at %.6f is gone",
+                      depth->header.stamp.toSec());
     return;
   }
+  try {
+    useCamera(vicc_tracking::cameraModelFromInfo(**info));
+  } catch (const std::exception& error) {
+    ROS_WARN_THROTTLE(kWarnPeriod, "fusion: depth frame at %.6f dropped, its camera_info on %s: %s",
+                      depth->header.stamp.toSec(), camera_sub_->infoTopic().c_str(), error.what());
+    return;
+  }
+  waiting_infos_.erase(info);  // those of frames tf never let through age out above
   Eigen::Isometry3d camera_pose;
   try {  // the message filter let the frame through: its pose is on tf now
     camera_pose = vicc_tracking::isometryFromTransform(
@@ -160,6 +184,14 @@ void FusionRos::onIntensity(const sensor_msgs::ImageConstPtr& gray) {
   constexpr size_t kKept = 10;  // the depth of the same stamp may be a few frames behind
   recent_gray_.push_back(gray);
   while (recent_gray_.size() > kKept) recent_gray_.pop_front();
+  latest_gray_ = gray->header.stamp;
+  if (!first_gray_) first_gray_ = latest_gray_;
+  if (tracker_) tracker_->processPending();  // a frame may have waited for this image
+}
+
+bool FusionRos::grayImageArrived(const ros::Time& stamp) const {
+  constexpr double kGiveUp = 0.5;  // s without gray images: they stopped, do not hold frames back
+  return !latest_gray_ || *latest_gray_ >= stamp || (stamp - *latest_gray_).toSec() > kGiveUp;
 }
 
 std::optional<cv::Mat1f> FusionRos::intensityFor(const ros::Time& stamp) {
@@ -175,7 +207,34 @@ std::optional<cv::Mat1f> FusionRos::intensityFor(const ros::Time& stamp) {
       return std::nullopt;
     }
   }
+  warnNoGrayImage(stamp);
   return std::nullopt;
+}
+
+void FusionRos::warnNoGrayImage(const ros::Time& stamp) {
+  constexpr int kStartupFrames = 15;  // the gray image's connection may come up a second later
+  if (!latest_gray_) {
+    if (++frames_before_any_gray_ == kStartupFrames) {
+      ROS_WARN(
+          "fusion: use_intensity, but no gray image on %s yet; depth frames on %s are "
+          "fused without intensity",
+          intensity_sub_.getTopic().c_str(), depthTopic().c_str());
+    }
+    return;
+  }
+  // Frames older than the first gray image came before its connection (unless a looping
+  // recording went back in time since).
+  if (stamp < *first_gray_ && *latest_gray_ >= *first_gray_) return;
+  ROS_WARN_THROTTLE(kWarnPeriod,
+                    "fusion: no gray image with the stamp %.6f of the depth frame on %s arrived "
+                    "on %s (its latest at %.6f); fused without intensity. Depth and gray image "
+                    "are paired by exact stamp.",
+                    stamp.toSec(), depthTopic().c_str(), intensity_sub_.getTopic().c_str(),
+                    latest_gray_->toSec());
+}
+
+std::string FusionRos::depthTopic() const {
+  return tracker_ ? tracker_->depthTopic() : camera_sub_->imageTopic();
 }
 
 void FusionRos::afterFusion(const FusionFrameStats& stats, const ros::Time& stamp) {

@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "vicc_common/ros_parameters.hpp"
 #include "vicc_glyphs/design/design_builder.hpp"
 #include "vicc_glyphs/perception/perception_model_yaml.hpp"
 #include "vicc_glyphs/render/png_output.hpp"
@@ -23,36 +24,34 @@ std::string packageFile(const std::string& relative) {
   return vicc_paths::packageDataPath("vicc_glyphs", relative, &anchor).string();
 }
 
-std::string stringParameter(const ros::NodeHandle& nh, const std::string& name,
-                            const std::string& fallback) {
-  if (!nh.hasParam(name)) return fallback;
-  std::string value;
-  if (!nh.getParam(name, value) || value.empty()) {
-    throw std::invalid_argument("parameter ~" + name + " must be a non-empty string");
-  }
-  return value;
-}
-
 }  // namespace
 
-GlyphServerParameters readGlyphServerParameters(const ros::NodeHandle& private_nh) {
+GlyphServerParameters GlyphServerParameters::withDefaultPaths() {
   GlyphServerParameters parameters;
-  parameters.designs_dir = stringParameter(private_nh, "designs_dir", packageFile("designs"));
-  parameters.perception_model =
-      stringParameter(private_nh, "perception_model", packageFile("config/perception_model.yaml"));
-  if (private_nh.hasParam("cache_size")) {
-    int size = 0;
-    if (!private_nh.getParam("cache_size", size) || size < 1 || size > 10000) {
-      throw std::invalid_argument("parameter ~cache_size must be an integer from 1 to 10000");
-    }
-    parameters.cache_size = size;
+  parameters.designs_dir = packageFile("designs");
+  parameters.perception_model = packageFile("config/perception_model.yaml");
+  return parameters;
+}
+
+void GlyphServerParameters::validate() const {
+  if (designs_dir.empty()) throw std::invalid_argument("designs_dir is empty");
+  if (perception_model.empty()) throw std::invalid_argument("perception_model is empty");
+  if (cache_size < 1 || cache_size > 10000) {
+    throw std::invalid_argument("cache_size must be an integer from 1 to 10000, got " +
+                                std::to_string(cache_size));
   }
+}
+
+GlyphServerParameters readGlyphServerParameters(const ros::NodeHandle& private_nh,
+                                                std::set<std::string>& read_names) {
+  GlyphServerParameters parameters = GlyphServerParameters::withDefaultPaths();
+  vicc_common::readRosParameters(private_nh, parameters, read_names);
   return parameters;
 }
 
 GlyphServer::GlyphServer(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : private_nh_(private_nh),
-      parameters_(readGlyphServerParameters(private_nh)),
+      parameters_(readGlyphServerParameters(private_nh, parameter_names_)),
       model_(perception::loadPerceptionModel(parameters_.perception_model)),
       transport_(private_nh) {
   if (!std::filesystem::is_directory(parameters_.designs_dir)) {
@@ -61,17 +60,25 @@ GlyphServer::GlyphServer(ros::NodeHandle nh, ros::NodeHandle private_nh)
   }
   for (const auto& file : std::filesystem::directory_iterator(parameters_.designs_dir)) {
     if (file.path().extension() != ".yaml") continue;
-    const std::string name = file.path().stem().string();
-    DesignEntry& entry = designs_[name];
-    entry.design = design::loadDesign(file.path().string(), model_);
-    entry.publisher = transport_.advertise(
-        name + "/image", 1, [this, name](const image_transport::SingleSubscriberPublisher& pub) {
-          onSubscribe(name, pub);
-        });
+    designs_[file.path().stem().string()].design = design::loadDesign(file.path().string(), model_);
   }
   if (designs_.empty()) {
     throw std::runtime_error("parameter ~designs_dir: no design (.yaml) in " +
                              parameters_.designs_dir);
+  }
+  // Checked before the image topics exist; their transports (e.g. compressed) keep their
+  // parameters under ~<design>/image.
+  std::vector<std::string> transport_namespaces;
+  for (const auto& design : designs_) {
+    transport_namespaces.push_back(private_nh_.resolveName(design.first + "/image"));
+  }
+  vicc_common::warnUnknownRosParameters(private_nh_, parameter_names_, transport_namespaces);
+  for (auto& [name, entry] : designs_) {
+    entry.publisher = transport_.advertise(
+        name + "/image", 1,
+        [this, design = name](const image_transport::SingleSubscriberPublisher& pub) {
+          onSubscribe(design, pub);
+        });
   }
   service_ = private_nh_.advertiseService("render", &GlyphServer::render, this);
   (void)nh;

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "vicc_common/ros_parameters.hpp"
 #include "vicc_glyphs/ros/glyph_server.hpp"
 
 namespace {
@@ -98,7 +99,8 @@ TEST(GlyphServer, ImageTopicDeliversRenderedGlyphsToSubscribers) {
   EXPECT_EQ(received.data, call.response.image.data);
 }
 
-// Parameters are read with errors that name them (in-process, on a private namespace).
+// Parameters are read through the shared table with errors that name them (in-process, on a
+// private namespace): wrong types, invalid values, bad paths, and typos.
 TEST(GlyphServerParameters, BadParametersAreNamed) {
   const auto message = [](const std::string& name, const auto& value) {
     ros::NodeHandle nh("~/bad_" + name);
@@ -111,15 +113,34 @@ TEST(GlyphServerParameters, BadParametersAreNamed) {
     }
     return std::string();
   };
-  EXPECT_NE(message("cache_size", 0).find("~cache_size must be an integer from 1 to 10000"),
+  EXPECT_NE(message("cache_size", 0).find("cache_size must be an integer from 1 to 10000, got 0"),
             std::string::npos);
-  EXPECT_NE(message("cache_size", std::string("many")).find("~cache_size"), std::string::npos);
+  EXPECT_NE(message("cache_size", std::string("many"))
+                .find("/bad_cache_size/cache_size has the wrong type: expected an integer, got "
+                      "'many'"),
+            std::string::npos);
   EXPECT_NE(message("designs_dir", std::string("/nonexistent")).find("~designs_dir"),
             std::string::npos);
-  EXPECT_NE(message("designs_dir", 3).find("~designs_dir must be a non-empty string"),
-            std::string::npos);
+  EXPECT_NE(
+      message("designs_dir", 3)
+          .find("/bad_designs_dir/designs_dir has the wrong type: expected a string, got '3'"),
+      std::string::npos);
   EXPECT_NE(message("perception_model", std::string("/nonexistent.yaml")).find("/nonexistent.yaml"),
             std::string::npos);
+}
+
+TEST(GlyphServerParameters, KeysLeftOutTakeThePackagesFilesAndTyposAreNamed) {
+  ros::NodeHandle nh("~/typo");
+  nh.setParam("cache_sise", 5);
+  std::set<std::string> read_names;
+  const auto parameters = vicc_glyphs::ros_glyph::readGlyphServerParameters(nh, read_names);
+  const auto defaults = vicc_glyphs::ros_glyph::GlyphServerParameters::withDefaultPaths();
+  EXPECT_EQ(parameters.cache_size, 64);
+  EXPECT_EQ(parameters.designs_dir, defaults.designs_dir);
+  EXPECT_FALSE(parameters.designs_dir.empty());
+  EXPECT_EQ(vicc_common::unknownRosParameters(nh, read_names),
+            std::vector<std::string>{nh.resolveName("cache_sise")});
+  nh.deleteParam("cache_sise");
 }
 
 int main(int argc, char** argv) {

@@ -68,6 +68,8 @@ class Tracker {
 
   void setCamera(const CameraModel& camera);
   bool hasCamera() const { return preprocessor_.hasCamera(); }
+  /// The calibration set last (hasCamera() says whether there is one).
+  const CameraModel& camera() const { return preprocessor_.camera(); }
 
   /// A rejected reading (duplicate, out of order, NaN) is reported and ignored; a clock jump
   /// backwards (a looping bag) resets the tracker.

@@ -32,32 +32,39 @@ TrackerRos::TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
   // IMU at up to 400 Hz must not be dropped while a depth frame is processed.
   imu_sub_ =
       nh.subscribe("imu", 2000, &TrackerRos::onImu, this, ros::TransportHints().tcpNoDelay());
-  info_sub_ = nh.subscribe("depth/camera_info", 10, &TrackerRos::onCameraInfo, this);
-  // image_transport: a recording or driver with compressedDepth works with
-  // ~image_transport:=compressedDepth. Not lazy: tf and odometry are always wanted.
-  image_transport::ImageTransport image_transport(nh);
-  depth_sub_ = image_transport.subscribe(
-      "depth/image", 10, &TrackerRos::onDepth, this,
-      image_transport::TransportHints("raw", ros::TransportHints(), private_nh));
+  // Depth and the camera_info of the same stamp, as image_transport pairs them: a recording
+  // or driver with compressedDepth works with ~image_transport:=compressedDepth. Not lazy: tf
+  // and odometry are always wanted.
+  camera_sub_ = std::make_unique<CameraSubscription>(
+      nh, "depth/image", 10,
+      image_transport::TransportHints("raw", ros::TransportHints(), private_nh), "tracker",
+      [this](const sensor_msgs::ImageConstPtr& depth, const sensor_msgs::CameraInfoConstPtr& info) {
+        onCameraFrame(depth, info);
+      });
   path_.header.frame_id = settings_.map_frame;
   ROS_INFO(
       "tracker: init strategy '%s', %d pyramid level(s); depth on %s, camera_info on %s, "
       "IMU on %s",
       toString(config_.init_strategy).c_str(), config_.preprocessing.pyramid_levels,
-      depth_sub_.getTopic().c_str(), info_sub_.getTopic().c_str(), imu_sub_.getTopic().c_str());
+      camera_sub_->imageTopic().c_str(), camera_sub_->infoTopic().c_str(),
+      imu_sub_.getTopic().c_str());
 }
 
 TrackerRos::~TrackerRos() = default;
 
-void TrackerRos::onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info) {
+bool TrackerRos::useCameraInfo(const sensor_msgs::CameraInfo& info) {
   try {
-    const CameraModel camera = cameraModelFromInfo(*info);
-    if (camera_ && *camera_ == camera) return;
+    const CameraModel camera = cameraModelFromInfo(info);
+    if (camera_ && *camera_ == camera) return true;
     if (camera_) ROS_WARN("tracker: camera_info changed; using the new calibration");
     camera_ = camera;
     if (tracker_) tracker_->setCamera(camera);
+    return true;
   } catch (const std::exception& error) {
-    ROS_WARN_THROTTLE(kWarnPeriod, "tracker: ignoring camera_info: %s", error.what());
+    ROS_WARN_THROTTLE(kWarnPeriod,
+                      "tracker: depth frame at %.6f dropped, its camera_info on %s: %s",
+                      info.header.stamp.toSec(), camera_sub_->infoTopic().c_str(), error.what());
+    return false;
   }
 }
 
@@ -72,7 +79,7 @@ void TrackerRos::onImu(const sensor_msgs::ImuConstPtr& imu) {
   if (imu_frame_.empty()) imu_frame_ = imu->header.frame_id;
   if (last_imu_stamp_ && sample.stamp < *last_imu_stamp_ - config_.synchronizer.clock_jump) {
     // A looping bag: frames queued from the old loop would be out of order now.
-    pending_depth_.clear();
+    pending_frames_.clear();
     imu_before_tracker_.clear();
     last_imu_stamp_ = sample.stamp;
   } else if (!last_imu_stamp_ || sample.stamp > *last_imu_stamp_) {
@@ -105,8 +112,9 @@ void TrackerRos::forwardImu(const ImuSample& sample) {
   }
 }
 
-void TrackerRos::onDepth(const sensor_msgs::ImageConstPtr& depth) {
-  pending_depth_.push_back(depth);
+void TrackerRos::onCameraFrame(const sensor_msgs::ImageConstPtr& depth,
+                               const sensor_msgs::CameraInfoConstPtr& info) {
+  pending_frames_.push_back({depth, info});
   processPending();
 }
 
@@ -155,34 +163,32 @@ bool TrackerRos::ensureTracker(const std::string& camera_frame) {
 
 void TrackerRos::processPending() {
   const bool imu_used = config_.wait_for_imu || needsImu(config_.init_strategy);
-  while (!pending_depth_.empty()) {
-    const sensor_msgs::ImageConstPtr depth = pending_depth_.front();
-    const bool imu_caught_up =
-        !imu_used || (last_imu_stamp_ && *last_imu_stamp_ >= depth->header.stamp.toSec());
-    const bool queue_full = static_cast<int>(pending_depth_.size()) > settings_.max_pending_frames;
-    if (!imu_caught_up && !queue_full) return;
-    if (!imu_caught_up && imu_used) {
+  while (!pending_frames_.empty()) {
+    const CameraFrame frame = pending_frames_.front();
+    const ros::Time& stamp = frame.depth->header.stamp;
+    const bool imu_caught_up = !imu_used || (last_imu_stamp_ && *last_imu_stamp_ >= stamp.toSec());
+    const bool gate_open = !frame_gate_ || frame_gate_(stamp);
+    const bool queue_full = static_cast<int>(pending_frames_.size()) > settings_.max_pending_frames;
+    if (!(imu_caught_up && gate_open) && !queue_full) return;
+    if (!imu_caught_up) {
       ROS_WARN_THROTTLE(kWarnPeriod,
                         "tracker: no IMU data up to depth stamp %.3f; processing "
                         "with the IMU data received so far",
-                        depth->header.stamp.toSec());
+                        stamp.toSec());
     }
-    pending_depth_.pop_front();
-    processDepth(depth);
+    pending_frames_.pop_front();
+    processDepth(frame);
   }
 }
 
-void TrackerRos::processDepth(const sensor_msgs::ImageConstPtr& depth) {
+void TrackerRos::processDepth(const CameraFrame& frame) {
+  const sensor_msgs::ImageConstPtr& depth = frame.depth;
   reconfigure_->applyPending(config_, tracker_.get());
   if (depth->header.frame_id.empty()) {
     ROS_WARN_THROTTLE(kWarnPeriod, "tracker: depth image without frame_id dropped");
     return;
   }
-  if (!camera_) {
-    ROS_WARN_THROTTLE(kWarnPeriod, "tracker: no valid camera_info on %s yet; depth dropped",
-                      info_sub_.getTopic().c_str());
-    return;
-  }
+  if (!useCameraInfo(*frame.info)) return;
   if (!ensureTracker(depth->header.frame_id)) return;
   FrameReport report;
   try {

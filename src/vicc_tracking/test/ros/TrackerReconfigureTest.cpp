@@ -1,13 +1,57 @@
 // The dynamic_reconfigure side of the tracker's tuning: the .cfg defaults are the config
-// structs' defaults, the conversions carry every field both ways and keep what the .cfg does
-// not cover, and a refused request is described by the values it asked for.
+// structs' defaults, the table-driven conversions carry every field both ways and keep what
+// the .cfg does not cover, a .cfg parameter the table lacks or types differently is named, and
+// a refused request is described by the values it asked for.
 #include <gtest/gtest.h>
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
 
 #include "vicc_tracking/ros/tracker_reconfigure.hpp"
 
 using namespace vicc_tracking;
 
 namespace {
+
+/// IcpConfig's table without min_inliers, as if the .cfg had a key the table lost.
+struct IcpWithoutMinInliers {
+  IcpConfig icp;
+};
+template <typename Config, typename Visitor>
+std::enable_if_t<std::is_same_v<std::remove_const_t<Config>, IcpWithoutMinInliers>> visitParameters(
+    Config& config, Visitor& visit) {
+  visit("max_correspondence_distance", config.icp.max_correspondence_distance);
+  visit("max_normal_angle_deg", config.icp.max_normal_angle_deg);
+  visit("convergence_translation", config.icp.convergence_translation);
+  visit("convergence_rotation_deg", config.icp.convergence_rotation_deg);
+  visit("min_inlier_ratio", config.icp.min_inlier_ratio);
+  visit("max_condition_number", config.icp.max_condition_number);
+  visit("max_jump_translation", config.icp.max_jump_translation);
+  visit("max_jump_rotation_deg", config.icp.max_jump_rotation_deg);
+}
+
+/// A table whose max_jump_translation is an integer, the .cfg's a double.
+struct IcpWithIntegerJump {
+  IcpConfig icp;
+  int max_jump_translation = 1;
+};
+template <typename Config, typename Visitor>
+std::enable_if_t<std::is_same_v<std::remove_const_t<Config>, IcpWithIntegerJump>> visitParameters(
+    Config& config, Visitor& visit) {
+  visitParameters(config.icp, visit);
+  visit("max_jump_translation", config.max_jump_translation);
+}
+
+std::string logicErrorOf(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const std::logic_error& error) {
+    return error.what();
+  }
+  return "";
+}
 
 TEST(TrackerReconfigureTest, CfgDefaultsAreTheConfigDefaults) {
   const IcpTuningConfig icp_defaults = IcpTuningConfig::__getDefault__();
@@ -54,7 +98,7 @@ TEST(TrackerReconfigureTest, ConversionsCarryEveryFieldAndKeepTheRest) {
   icp.max_jump_rotation_deg = 25.0;
   IcpConfig base;
   base.iterations_per_level = {7, 3};
-  const IcpConfig icp_back = fromTuning(toTuning(icp), base);
+  const IcpConfig icp_back = fromTuning(toTuning<IcpTuningConfig>(icp), base);
   EXPECT_EQ(icp_back.max_correspondence_distance, 0.07);
   EXPECT_EQ(icp_back.max_normal_angle_deg, 35.0);
   EXPECT_EQ(icp_back.convergence_translation, 2e-4);
@@ -71,7 +115,7 @@ TEST(TrackerReconfigureTest, ConversionsCarryEveryFieldAndKeepTheRest) {
   ekf.imu_aided_virtual_velocity = false;
   EkfConfig ekf_base;
   ekf_base.imu_noise_file = "imu.yaml";
-  const EkfConfig ekf_back = fromTuning(toTuning(ekf), ekf_base);
+  const EkfConfig ekf_back = fromTuning(toTuning<EkfTuningConfig>(ekf), ekf_base);
   EXPECT_EQ(ekf_back.process_noise_rotation, ekf.process_noise_rotation);
   EXPECT_EQ(ekf_back.process_noise_velocity, ekf.process_noise_velocity);
   EXPECT_EQ(ekf_back.process_noise_position, ekf.process_noise_position);
@@ -88,20 +132,34 @@ TEST(TrackerReconfigureTest, ConversionsCarryEveryFieldAndKeepTheRest) {
   EXPECT_EQ(ekf_back.imu_noise_file, "imu.yaml");
 }
 
+TEST(TrackerReconfigureTest, ACfgParameterOutsideTheTableIsNamed) {
+  const std::string missing =
+      logicErrorOf([] { toTuning<IcpTuningConfig>(IcpWithoutMinInliers{}); });
+  EXPECT_NE(missing.find("'min_inliers' is no key"), std::string::npos) << missing;
+  const std::string mistyped =
+      logicErrorOf([] { toTuning<IcpTuningConfig>(IcpWithIntegerJump{}); });
+  EXPECT_NE(mistyped.find("'max_jump_translation' is double_t in the .cfg but int"),
+            std::string::npos)
+      << mistyped;
+  const std::string reading =
+      logicErrorOf([] { fromTuning(IcpTuningConfig::__getDefault__(), IcpWithIntegerJump{}); });
+  EXPECT_NE(reading.find("max_jump_translation"), std::string::npos) << reading;
+}
+
 TEST(TrackerReconfigureTest, DescribesTheRequestedChangesOnly) {
   IcpConfig icp;
   EkfConfig ekf;
   dynamic_reconfigure::Config current, request;
-  toTuning(icp).__toMessage__(current);
+  toTuning<IcpTuningConfig>(icp).__toMessage__(current);
   EXPECT_EQ(describeChanges(current, current), "");
   icp.min_inliers = 3;
   icp.max_normal_angle_deg = 120.0;
-  toTuning(icp).__toMessage__(request);
+  toTuning<IcpTuningConfig>(icp).__toMessage__(request);
   EXPECT_EQ(describeChanges(request, current), "max_normal_angle_deg=120, min_inliers=3");
 
-  toTuning(ekf).__toMessage__(current);
+  toTuning<EkfTuningConfig>(ekf).__toMessage__(current);
   ekf.imu_aided_virtual_velocity = false;
-  toTuning(ekf).__toMessage__(request);
+  toTuning<EkfTuningConfig>(ekf).__toMessage__(request);
   EXPECT_EQ(describeChanges(request, current), "imu_aided_virtual_velocity=false");
 }
 

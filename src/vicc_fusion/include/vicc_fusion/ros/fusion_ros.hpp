@@ -6,6 +6,10 @@
 //   frame. Where the model does not cover the view yet, the tracker stays frame-to-frame.
 // - track: false: an external tracker publishes the camera pose on tf (map_frame -> depth
 //   frame); the node only fuses, with that pose at each depth stamp.
+// Depth comes with the camera_info of its stamp (CameraSubscription: image_transport's
+// pairing, unpaired frames warned). With use_intensity each frame takes the gray image of its
+// stamp; with track: true a frame waits for it (a few frames at most), and a frame fused
+// without its gray image is warned about.
 // Both publish the stable model on ~model (PointCloud2, latched, throttled, only with
 // subscribers; the final model once the frames stop) and serve ~save_model (binary PLY).
 
@@ -15,7 +19,6 @@
 #include <set>
 #include <string>
 
-#include <image_transport/subscriber_filter.h>
 #include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
@@ -27,6 +30,7 @@
 #include "vicc_fusion/frame_to_model.hpp"
 #include "vicc_fusion/fusion_parameters.hpp"
 #include "vicc_fusion/ros/fusion_reconfigure.hpp"
+#include "vicc_tracking/ros/camera_subscription.hpp"
 #include "vicc_tracking/ros/latest_state_publisher.hpp"
 #include "vicc_tracking/ros/tracker_ros.hpp"
 
@@ -52,12 +56,21 @@ class FusionRos {
   void warnUnknownParameters(const ros::NodeHandle& private_nh);
   void onTrackedFrame(vicc_tracking::Tracker& tracker, const vicc_tracking::FrameReport& report,
                       const sensor_msgs::Image& depth, const Eigen::Isometry3d& map_alignment);
-  void onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info);
+  /// The preprocessor's calibration: the undistortion of the gray image (track: false: of the
+  /// depth too).
+  void useCamera(const vicc_tracking::CameraModel& camera);
+  void onCameraFrame(const sensor_msgs::ImageConstPtr& depth,
+                     const sensor_msgs::CameraInfoConstPtr& info);
   void onDepth(const sensor_msgs::ImageConstPtr& depth);
   void onIntensity(const sensor_msgs::ImageConstPtr& gray);
+  /// track: true: whether the frame at `stamp` may go: its gray image (or a later one) arrived,
+  /// or none is coming (no gray image yet, or none for half a second).
+  bool grayImageArrived(const ros::Time& stamp) const;
   /// The gray image with the depth's stamp on the depth's undistorted grid; nullopt if none
-  /// arrived (the frame is then fused without intensity) or it is unusable (warning).
+  /// arrived (the frame is then fused without intensity) or it is unusable (both warned).
   std::optional<cv::Mat1f> intensityFor(const ros::Time& stamp);
+  void warnNoGrayImage(const ros::Time& stamp);
+  std::string depthTopic() const;
   void afterFusion(const FusionFrameStats& stats, const ros::Time& stamp);
   bool onSaveModel(vicc_msgs::SaveModel::Request& request,
                    vicc_msgs::SaveModel::Response& response);
@@ -75,15 +88,19 @@ class FusionRos {
   // use_intensity: recent gray images (a few frames), and the preprocessor that undistorts
   // them (track: false uses it for the depth too)
   std::deque<sensor_msgs::ImageConstPtr> recent_gray_;
+  std::optional<ros::Time> first_gray_, latest_gray_;
+  int frames_before_any_gray_ = 0;
   ros::Subscriber intensity_sub_;
-  // track: false
   std::unique_ptr<vicc_tracking::DepthPreprocessor> preprocessor_;
   std::optional<vicc_tracking::CameraModel> camera_;
+  // track: false
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
-  std::unique_ptr<image_transport::SubscriberFilter> depth_sub_;  ///< ~image_transport selects
+  /// depth/image (~image_transport selects the transport) + the camera_info beside it
+  std::unique_ptr<vicc_tracking::CameraSubscription> camera_sub_;
+  /// Paired depth frames wait here for their pose on tf; their camera_info beside them.
   std::unique_ptr<tf2_ros::MessageFilter<sensor_msgs::Image>> depth_pose_filter_;
-  ros::Subscriber info_sub_;
+  std::deque<sensor_msgs::CameraInfoConstPtr> waiting_infos_;
 
   ros::Publisher model_pub_;
   /// The stable model on model_pub_: throttled to publish_rate while frames arrive, the final

@@ -4,7 +4,8 @@
 // - Topics ~<design>/image (image_transport): every glyph rendered for that design is
 //   published there while someone subscribes (nothing is encoded otherwise); a new
 //   subscriber gets the latest one.
-// Parameters (read once; a bad one stops start-up with a message naming it):
+// Parameters (read once through vicc_common's table reader: a wrong type or an invalid value
+// stops start-up with a message naming it, an unknown key in ~ is warned about):
 //   ~designs_dir (string): directory of design YAML files (default: the package's designs/)
 //   ~perception_model (string): model file (default: the package's config/perception_model.yaml)
 //   ~cache_size (int, 1..10000, default 64): rendered glyphs kept, keyed by design, data
@@ -19,7 +20,9 @@
 #include <memory>
 #include <mutex>
 #include <opencv2/core.hpp>
+#include <set>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "vicc_glyphs/design/glyph_design.hpp"
@@ -32,10 +35,26 @@ struct GlyphServerParameters {
   std::string designs_dir;
   std::string perception_model;
   int cache_size = 64;
+
+  /// The defaults, with the package's designs/ and config/perception_model.yaml.
+  static GlyphServerParameters withDefaultPaths();
+  /// Throws std::invalid_argument naming the parameter.
+  void validate() const;
 };
 
-/// Reads the parameters; throws std::invalid_argument naming the bad one.
-GlyphServerParameters readGlyphServerParameters(const ros::NodeHandle& private_nh);
+template <typename Config, typename Visitor>
+std::enable_if_t<std::is_same_v<std::remove_const_t<Config>, GlyphServerParameters>>
+visitParameters(Config& config, Visitor& visit) {
+  visit("designs_dir", config.designs_dir);
+  visit("perception_model", config.perception_model);
+  visit("cache_size", config.cache_size);
+}
+
+/// Reads the parameters under `private_nh` over withDefaultPaths(); throws
+/// std::invalid_argument naming a parameter of the wrong type or an invalid value. Adds the
+/// resolved names it read to `read_names`.
+GlyphServerParameters readGlyphServerParameters(const ros::NodeHandle& private_nh,
+                                                std::set<std::string>& read_names);
 
 class GlyphServer {
  public:
@@ -58,6 +77,7 @@ class GlyphServer {
                    const image_transport::SingleSubscriberPublisher& pub);
 
   ros::NodeHandle private_nh_;
+  std::set<std::string> parameter_names_;  ///< the resolved names the table read
   GlyphServerParameters parameters_;
   perception::PerceptionModel model_;
   std::map<std::string, DesignEntry> designs_;

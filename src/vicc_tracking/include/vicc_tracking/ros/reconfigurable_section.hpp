@@ -7,9 +7,8 @@
 // until the node takes them between two frames: the reconfigure service may run on another
 // thread than the frame callbacks (nodelet managers, multi-threaded spinners).
 //
-// Needs, found by argument-dependent lookup in the section's namespace:
-//   Tuning toTuning(const Section&);                  the .cfg's fields from the section
-//   Section fromTuning(const Tuning&, Section base);  the section with the .cfg's fields set
+// The .cfg's parameters are the section table's keys (reconfigure_table.hpp): the table drives
+// the conversions, found for the section by argument-dependent lookup (visitParameters).
 
 #include <mutex>
 #include <optional>
@@ -20,6 +19,8 @@
 #include <dynamic_reconfigure/server.h>
 #include <ros/ros.h>
 #include <boost/thread/recursive_mutex.hpp>
+
+#include "vicc_tracking/ros/reconfigure_table.hpp"
 
 namespace vicc_tracking {
 
@@ -33,7 +34,7 @@ class ReconfigurableSection {
   /// Serves `initial` (the values the node runs with) on `nh`; `label` starts its log lines.
   ReconfigurableSection(const ros::NodeHandle& nh, std::string label, const Section& initial)
       : label_(std::move(label)), accepted_(initial), server_(server_mutex_, nh) {
-    Tuning tuning = toTuning(initial);
+    Tuning tuning = toTuning<Tuning>(initial);
     server_.updateConfig(tuning);
     // setCallback replays the initial values: no change, nothing to apply.
     server_.setCallback([this](Tuning& request, uint32_t) { onRequest(request); });
@@ -50,7 +51,7 @@ class ReconfigurableSection {
  private:
   void onRequest(Tuning& request) {
     std::lock_guard<std::mutex> lock(mutex_);
-    const Tuning current = toTuning(accepted_);
+    const Tuning current = toTuning<Tuning>(accepted_);
     dynamic_reconfigure::Config requested_values, current_values;
     request.__toMessage__(requested_values);
     current.__toMessage__(current_values);

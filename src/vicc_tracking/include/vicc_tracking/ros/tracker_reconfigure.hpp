@@ -1,21 +1,17 @@
 #pragma once
 // dynamic_reconfigure of the tracker's tuning while it runs: the ICP thresholds on ~icp
 // (cfg/IcpTuning.cfg) and the EKF noise on ~ekf (cfg/EkfTuning.cfg), under the keys of the
-// parameter tables. Frames, topics and the pyramid layout stay start-up parameters.
+// parameter tables, which convert between the .cfg and the config structs (toTuning and
+// fromTuning of reconfigure_table.hpp); the fields the .cfg leaves out (iterations_per_level,
+// imu_noise_file) stay start-up parameters, as do frames, topics and the pyramid layout.
 
 #include "vicc_tracking/EkfTuningConfig.h"
 #include "vicc_tracking/IcpTuningConfig.h"
 #include "vicc_tracking/ros/reconfigurable_section.hpp"
 #include "vicc_tracking/tracker.hpp"
+#include "vicc_tracking/tracker_parameters.hpp"
 
 namespace vicc_tracking {
-
-/// The .cfg's fields from the config structs and back; fields the .cfg does not cover
-/// (iterations_per_level, imu_noise_file) keep the values of `base`.
-IcpTuningConfig toTuning(const IcpConfig& icp);
-IcpConfig fromTuning(const IcpTuningConfig& tuning, IcpConfig base);
-EkfTuningConfig toTuning(const EkfConfig& ekf);
-EkfConfig fromTuning(const EkfTuningConfig& tuning, EkfConfig base);
 
 class TrackerReconfigure {
  public:

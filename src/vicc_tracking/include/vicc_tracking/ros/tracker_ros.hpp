@@ -10,7 +10,6 @@
 #include <set>
 #include <string>
 
-#include <image_transport/image_transport.h>
 #include <nav_msgs/Path.h>
 #include <ros/ros.h>
 #include <sensor_msgs/CameraInfo.h>
@@ -20,6 +19,7 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <tf2_ros/transform_listener.h>
 
+#include "vicc_tracking/ros/camera_subscription.hpp"
 #include "vicc_tracking/tracker.hpp"
 #include "vicc_tracking/tracker_parameters.hpp"
 
@@ -47,18 +47,35 @@ class TrackerRos {
       std::function<void(Tracker& tracker, const FrameReport& report,
                          const sensor_msgs::Image& depth, const Eigen::Isometry3d& map_alignment)>;
   void setFrameHook(FrameHook hook) { frame_hook_ = std::move(hook); }
+  /// Holds each depth frame until `ready(stamp)` too (besides the IMU data up to its stamp), at
+  /// most until ~max_pending_frames wait; whoever owns the condition calls processPending()
+  /// when it may have changed. Lets the fusion wait for the gray image of the frame's stamp.
+  void setFrameGate(std::function<bool(const ros::Time& stamp)> ready) {
+    frame_gate_ = std::move(ready);
+  }
+  /// Processes the waiting depth frames whose inputs are all there (or that must go now).
+  void processPending();
   const TrackerNodeSettings& settings() const { return settings_; }
+  /// The resolved depth topic.
+  std::string depthTopic() const { return camera_sub_->imageTopic(); }
   /// Resolved names of the parameters the tracker reads.
   const std::set<std::string>& parameterNames() const { return parameter_names_; }
 
  private:
-  void onCameraInfo(const sensor_msgs::CameraInfoConstPtr& info);
+  /// A depth image and the camera_info of its stamp.
+  struct CameraFrame {
+    sensor_msgs::ImageConstPtr depth;
+    sensor_msgs::CameraInfoConstPtr info;
+  };
+
   void onImu(const sensor_msgs::ImuConstPtr& imu);
-  void onDepth(const sensor_msgs::ImageConstPtr& depth);
+  void onCameraFrame(const sensor_msgs::ImageConstPtr& depth,
+                     const sensor_msgs::CameraInfoConstPtr& info);
+  /// Takes the frame's calibration; false (warned) if its camera_info is invalid.
+  bool useCameraInfo(const sensor_msgs::CameraInfo& info);
 
   bool ensureTracker(const std::string& camera_frame);
-  void processPending();
-  void processDepth(const sensor_msgs::ImageConstPtr& depth);
+  void processDepth(const CameraFrame& frame);
   void publish(const FrameReport& report, const sensor_msgs::Image& depth);
   void publishPose(const Eigen::Isometry3d& camera_pose, const ros::Time& stamp,
                    const std::string& camera_frame);
@@ -70,12 +87,13 @@ class TrackerRos {
   TrackerNodeSettings settings_;
   std::unique_ptr<TrackerReconfigure> reconfigure_;  ///< ~icp, ~ekf tuning while running
   FrameHook frame_hook_;
+  std::function<bool(const ros::Time&)> frame_gate_;
   std::unique_ptr<Tracker> tracker_;
   std::optional<CameraModel> camera_;
   std::string imu_frame_;
   std::optional<double> last_imu_stamp_;
   std::deque<ImuSample> imu_before_tracker_;
-  std::deque<sensor_msgs::ImageConstPtr> pending_depth_;
+  std::deque<CameraFrame> pending_frames_;
   Eigen::Isometry3d camera_to_child_ = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d map_alignment_ = Eigen::Isometry3d::Identity();
   std::optional<Eigen::Isometry3d> last_published_pose_;
@@ -85,8 +103,8 @@ class TrackerRos {
   tf2_ros::Buffer tf_buffer_;
   tf2_ros::TransformListener tf_listener_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
-  image_transport::Subscriber depth_sub_;  ///< raw or e.g. compressedDepth (~image_transport)
-  ros::Subscriber info_sub_;
+  /// depth/image (raw or e.g. compressedDepth, ~image_transport) + the camera_info beside it
+  std::unique_ptr<CameraSubscription> camera_sub_;
   ros::Subscriber imu_sub_;
   ros::Publisher odom_pub_;
   ros::Publisher path_pub_;

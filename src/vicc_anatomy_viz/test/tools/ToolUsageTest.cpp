@@ -1,0 +1,65 @@
+// The avatar model tool and the two bench tools parse their command lines with vicc_common's
+// parser: an unknown option, a missing required option, a value of the wrong kind or out of
+// range is a usage error (exit code 2) whose message names it, followed by the usage.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+
+namespace {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  ///< stdout and stderr together
+};
+
+CommandResult run(const std::string& command) {
+  CommandResult result;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer{};
+  std::size_t read = 0;
+  while ((read = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
+    result.output.append(buffer.data(), read);
+  }
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+/// `tool arguments` fails with exit code 2, a message naming `expected`, and the usage.
+void expectUsageError(const std::string& tool, const std::string& arguments,
+                      const std::string& expected) {
+  const CommandResult result = run(tool + " " + arguments);
+  EXPECT_EQ(result.exit_code, 2) << arguments << ":\n" << result.output;
+  EXPECT_NE(result.output.find(expected), std::string::npos) << arguments << ":\n" << result.output;
+  EXPECT_NE(result.output.find("usage: "), std::string::npos) << result.output;
+}
+
+TEST(ToolUsage, AvatarModel) {
+  expectUsageError(VICC_AVATAR_MODEL_TOOL, "", "--report or --export DIR is needed");
+  expectUsageError(VICC_AVATAR_MODEL_TOOL, "--reprot", "--reprot");
+  expectUsageError(VICC_AVATAR_MODEL_TOOL, "--report extra", "unexpected argument 'extra'");
+  expectUsageError(VICC_AVATAR_MODEL_TOOL, "--export", "--export");
+  const CommandResult help = run(std::string(VICC_AVATAR_MODEL_TOOL) + " --help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.output.find("--manifest FILE"), std::string::npos) << help.output;
+}
+
+TEST(ToolUsage, PatientBench) {
+  expectUsageError(VICC_PATIENT_BENCH_TOOL, "--patient P", "needs --db");
+  expectUsageError(VICC_PATIENT_BENCH_TOOL, "--db x.db", "needs --patient");
+  expectUsageError(VICC_PATIENT_BENCH_TOOL, "--db x.db --patient P --repeat many", "--repeat");
+  expectUsageError(VICC_PATIENT_BENCH_TOOL, "--db x.db --patient P --repaet 3", "--repaet");
+}
+
+TEST(ToolUsage, DurabilityBench) {
+  expectUsageError(VICC_DURABILITY_BENCH_TOOL, "--records 10", "needs --dir");
+  expectUsageError(VICC_DURABILITY_BENCH_TOOL, "--dir /tmp --records 0", "--records");
+  expectUsageError(VICC_DURABILITY_BENCH_TOOL, "--dir /tmp --bulk lots", "--bulk");
+  expectUsageError(VICC_DURABILITY_BENCH_TOOL, "--dir /tmp --repeats 3", "--repeats");
+}
+
+}  // namespace
