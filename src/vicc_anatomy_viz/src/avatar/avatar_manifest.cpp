@@ -41,7 +41,8 @@ MeshSource readMeshSource(const Cursor& item, const std::filesystem::path& direc
 }
 
 /// The keys every generated part has, and those of its section shape.
-const std::vector<std::string> kShapeKeys = {"bone", "section", "from", "to", "azimuth", "profile"};
+const std::vector<std::string> kShapeKeys = {"bone",    "section", "from", "to",
+                                             "azimuth", "profile", "tilt"};
 const std::vector<std::string> kEllipseKeys = {"depth", "thickness", "width"};
 const std::vector<std::string> kSectorKeys = {"span", "inner", "outer"};
 const std::vector<std::string> kCavityKeys = {"inset", "half", "fissure"};
@@ -124,6 +125,8 @@ GeneratedShape readShape(const Cursor& item) {
   shape.to = number(item, "to", shape.to);
   shape.azimuth = number(item, "azimuth", shape.azimuth);
   readProfile(item, shape);
+  shape.tilt = number(item, "tilt", shape.tilt);
+  if (!(std::fabs(shape.tilt) < 60)) item.fail("tilt must be within -60 and 60 degrees");
   if (!(shape.to > shape.from)) item.fail("'to' must be greater than 'from'");
   if (shape.section == SectionShape::kEllipse) readEllipse(item, shape);
   if (shape.section == SectionShape::kSector) readSector(item, shape);

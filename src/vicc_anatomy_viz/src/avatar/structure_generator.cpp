@@ -28,7 +28,9 @@ struct Station {
 Station stationAt(const TriangleMesh& skin, const BoneFrame& bone, const GeneratedShape& shape,
                   float fraction, const std::string& what) {
   Station station;
-  station.plane = SectionPlane::through(bone.at(fraction), bone.axis, bone.anterior);
+  const float tilt = shape.tilt * static_cast<float>(M_PI) / 180.0f;
+  const Eigen::Vector3f normal = std::cos(tilt) * bone.axis - std::sin(tilt) * bone.anterior;
+  station.plane = SectionPlane::through(bone.at(fraction), normal, bone.anterior);
   const std::vector<SectionLoop> loops = sliceMesh(skin, station.plane);
   const SectionLoop* loop = loopContaining(loops, Eigen::Vector2f::Zero());
   if (!loop) {

@@ -117,8 +117,9 @@ TEST(AvatarManifestTest, SectionShapesTakeOnlyTheirOwnKeys) {
   EXPECT_NE(soleus("{bone: shank, profile: [0.5, 0.6, 0.7]}").find("[proximal, distal]"),
             std::string::npos);
   EXPECT_NE(soleus("{bone: shank, profile: 0}").find("profile"), std::string::npos);
+  EXPECT_NE(soleus("{bone: shank, tilt: 75}").find("tilt"), std::string::npos);
   EXPECT_EQ(soleus("{bone: shank, section: sector, span: 60, inner: 0.3, outer: 0.8, "
-                   "profile: [0.4, 0.7]}"),
+                   "profile: [0.4, 0.7], tilt: 10}"),
             "");
 }
 

@@ -186,14 +186,33 @@ TEST(AvatarModelTest, TheBrainIsTwoHemispheresFillingTheCranium) {
   const double volume_cm3 = signedVolume(brain->mesh) * 1e6;
   std::printf("brain: %.1f x %.1f x %.1f cm, %.0f cm^3\n", 100 * size.x(), 100 * size.y(),
               100 * size.z(), volume_cm3);
-  // A cerebrum: longer than wide, wider than high (adult: about 16 x 13 x 10 cm, 1100 cm^3).
+  // A cerebrum: longer than wide, wider than high (adult: about 16 x 13 x 10 cm).
   EXPECT_GT(size.x(), size.y());
   EXPECT_GT(size.y(), size.z());
-  EXPECT_GT(volume_cm3, 600.0);
-  EXPECT_LT(volume_cm3, 1600.0);
-  // Inside the cranium: above the occiput, the top under scalp and skull, not in the face.
+  // Filling the cranium: at its mid-height most of the head's length and width, inside the
+  // scalp and skull (the earlier spindle: 10 x 9 cm, 133 cm^3, a third of the width up top).
+  const float middle = box.center().z();
+  const SectionPlane level =
+      SectionPlane::through(Eigen::Vector3f(0.f, 0.f, middle), Eigen::Vector3f::UnitZ());
+  const std::vector<SectionLoop> head_loops = sliceMesh(build.model.skin, level);
+  const SectionLoop* head = loopContaining(head_loops, Eigen::Vector2f::Zero());
+  ASSERT_NE(head, nullptr);
+  Eigen::AlignedBox2f slab;
+  for (const Eigen::Vector3f& v : brain->mesh.vertices)
+    if (std::fabs(v.z() - middle) < 0.006f) slab.extend(Eigen::Vector2f(v.x(), v.y()));
+  const Eigen::Vector2f head_size = head->max_corner - head->min_corner;
+  std::printf("at mid-height: brain %.1f x %.1f cm in a head of %.1f x %.1f cm\n",
+              100 * slab.sizes().x(), 100 * slab.sizes().y(), 100 * head_size.x(),
+              100 * head_size.y());
+  EXPECT_GT(slab.sizes().x(), 0.75f * head_size.x());
+  EXPECT_GT(slab.sizes().y(), 0.75f * head_size.y());
+  EXPECT_LT(slab.sizes().x(), head_size.x() - 0.016f);
+  EXPECT_LT(slab.sizes().y(), head_size.y() - 0.016f);
+  EXPECT_GT(volume_cm3, 400.0);
+  // Inside the cranium: its base about the level of the occiput (the base rises towards the
+  // orbits), the top under scalp and skull.
   const float vertex = build.landmarks.height;
-  EXPECT_GE(box.min().z(), build.landmarks.point("head_centre").z());
+  EXPECT_GE(box.min().z(), build.landmarks.point("head_centre").z() - 0.01f);
   EXPECT_GT(box.max().z(), vertex - 0.03f);
   EXPECT_LT(box.max().z(), vertex - 0.008f);
   // Two hemispheres: nothing in the longitudinal fissure.

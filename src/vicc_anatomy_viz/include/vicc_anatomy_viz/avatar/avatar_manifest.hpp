@@ -43,7 +43,9 @@ enum class SectionShape {
 /// bone, scaled towards its centre by the belly profile sin(pi t)^e (t from 0 to 1 along the
 /// structure; e = `profile_proximal` for t < 1/2, else `profile_distal`: round ends with 0.5,
 /// a full belly tapering into tendons with 0.6, a blunt end with 0.2). Azimuths are degrees
-/// around the bone, 0 anterior, +90 lateral.
+/// around the bone, 0 anterior, +90 lateral. The station planes are perpendicular to the bone,
+/// or tilted by `tilt` degrees so that they rise (towards the bone's distal end) anteriorly,
+/// e.g. the base of the brain, higher over the orbits than at the occiput.
 struct GeneratedShape {
   std::string bone;
   SectionShape section = SectionShape::kEllipse;
@@ -51,6 +53,7 @@ struct GeneratedShape {
   float azimuth = 0;
   float profile_proximal = 0.6f;
   float profile_distal = 0.6f;
+  float tilt = 0;  ///< degrees
   // kEllipse
   float depth = 0.5f;
   float thickness = 0.3f;
