@@ -99,9 +99,9 @@ void stitchRings(TriangleMesh& mesh, int rings, int points) {
 
 }  // namespace
 
-TriangleMesh generateSpindle(const TriangleMesh& skin, const BodyLandmarks& landmarks,
-                             const GeneratedShape& shape, Side side, float margin,
-                             const std::string& what) {
+TriangleMesh generateShape(const TriangleMesh& skin, const BodyLandmarks& landmarks,
+                           const GeneratedShape& shape, Side side, float margin,
+                           const std::string& what) {
   const BoneFrame bone = landmarks.bone(shape.bone, side);
   std::vector<Station> stations;
   std::vector<float> scales;
