@@ -1,5 +1,6 @@
 #include "vicc_anatomy_viz/rviz/avatar_materials.hpp"
 
+#include <OGRE/OgreException.h>
 #include <OGRE/OgreImage.h>
 #include <OGRE/OgreMaterialManager.h>
 #include <OGRE/OgrePass.h>
@@ -113,14 +114,18 @@ void AvatarMaterials::applyTexture(const Ogre::MaterialPtr& material,
       relief_status_.fallback_reason = why;
       relief_status_.unavailable = true;
     } else {
-      applyReliefPrograms(pass, relief);
-      material->load();
-      if (!material->getSupportedTechniques().empty()) {
-        relief_status_.per_pixel = true;
-        return;
+      try {
+        applyReliefPrograms(pass, relief);
+        material->load();
+        if (!material->getSupportedTechniques().empty()) {
+          relief_status_.per_pixel = true;
+          return;
+        }
+        relief_status_.fallback_reason = "the relief programs are not supported here: " +
+                                         material->getUnsupportedTechniquesExplanation();
+      } catch (const Ogre::Exception& error) {
+        relief_status_.fallback_reason = "the relief programs failed: " + error.getDescription();
       }
-      relief_status_.fallback_reason = "the relief programs are not supported here: " +
-                                       material->getUnsupportedTechniquesExplanation();
       relief_status_.unavailable = true;
       pass.setVertexProgram("");
       pass.setFragmentProgram("");
