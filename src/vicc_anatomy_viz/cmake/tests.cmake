@@ -61,6 +61,7 @@ catkin_add_gtest(vicc_anatomy_viz_avatar_view_test
   test/avatar_view/DrawStateTest.cpp
   test/avatar_view/OcclusionTest.cpp
   test/avatar_view/ProceduralTextureTest.cpp
+  test/avatar_view/ReliefShadingTest.cpp
   test/avatar_view/RenderBatchesTest.cpp)
 target_compile_options(vicc_anatomy_viz_avatar_view_test PRIVATE ${VICC_WARNINGS})
 target_link_libraries(vicc_anatomy_viz_avatar_view_test vicc_anatomy_viz_avatar_view gtest_main)

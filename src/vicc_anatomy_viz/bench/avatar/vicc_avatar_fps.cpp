@@ -1,12 +1,15 @@
 // Frames per second of rviz drawing the avatar while the camera orbits it (bench, not a test):
-//   vicc_avatar_fps --db FILE --patient ID [--date D] [--full] [--no-aa] [--size WxH]
-//                   [--frames N]
+//   vicc_avatar_fps --db FILE --patient ID [--date D] [--full [--relief]] [--pre-shaded]
+//                   [--no-aa] [--size WxH] [--frames N]
 // Starts its own Xvfb (when DISPLAY is unset) and private ROS master like vicc_avatar_snapshot,
 // lets rviz's own update loop render N frames with transparency on, N with it off and N with
 // the display disabled (the floor), one orbit per 120 frames, and prints one line per mode
 // (frames = renders of the 3D view, counted by a render target listener; rviz's Frame Rate cap
 // is lifted). --full adds an encoded entry for every structure and skin region of the
-// avatar (the heaviest status the display can get); --no-aa is rviz's --disable-anti-aliasing
+// avatar (the heaviest status the display can get), in the noise texture or, with --relief, in
+// the pain trigger's normal perturbation (every entry lit per pixel by the relief shader);
+// --pre-shaded switches the display's "Per-pixel relief" off (the pre-shaded texture, for an
+// A/B of the shader's cost); --no-aa is rviz's --disable-anti-aliasing
 // (rviz asks OGRE for 4x multisampling by default). Besides wall-clock FPS it prints frames per
 // CPU-second of the process (all its threads, llvmpipe's included): the rate one core would
 // give without other processes competing for it.
@@ -43,6 +46,8 @@ using namespace vicc_anatomy_viz;
 struct BenchOptions {
   std::string db, patient, date;
   bool full = false;
+  bool relief = false;
+  bool pre_shaded = false;
   bool no_antialiasing = false;
   int width = 1280, height = 800, frames = 360;
 };
@@ -58,6 +63,10 @@ BenchOptions parse(int argc, char** argv) {
     }
     if (arg == "--no-aa") {
       options.no_antialiasing = true;
+      continue;
+    }
+    if (arg == "--relief" || arg == "--pre-shaded") {
+      (arg == "--relief" ? options.relief : options.pre_shaded) = true;
       continue;
     }
     ++i;
@@ -80,8 +89,8 @@ BenchOptions parse(int argc, char** argv) {
   }
   if (options.db.empty() || options.patient.empty())
     throw std::invalid_argument(
-        "usage: vicc_avatar_fps --db FILE --patient ID [--date D] [--full] "
-        "[--size WxH] [--frames N]");
+        "usage: vicc_avatar_fps --db FILE --patient ID [--date D] [--full [--relief]] "
+        "[--pre-shaded] [--no-aa] [--size WxH] [--frames N]");
   return options;
 }
 
@@ -96,17 +105,18 @@ vicc_msgs::EncodedStatus patientStatus(const BenchOptions& options) {
 }
 
 /// The patient's status plus one entry per structure and skin region of the avatar, in the
-/// colour and texture of the patient's first entry (textured entries cost the most).
+/// colour of the patient's first entry, textured (textured entries cost the most): noise, or
+/// the pain trigger's normal perturbation (`relief`).
 vicc_msgs::EncodedStatus fullStatus(vicc_msgs::EncodedStatus status,
-                                    const avatar::AvatarModel& model) {
+                                    const avatar::AvatarModel& model, bool relief) {
   if (status.structures.empty()) return status;
   vicc_msgs::EncodedStructure pattern = status.structures.front();
   pattern.alternation_group = -1;
-  pattern.texture_id = "noise";
-  pattern.texture_level = 2;
-  pattern.texture_levels = 3;
-  pattern.texture_frequency = 8.f;
-  pattern.texture_amplitude = 0.65f;
+  pattern.texture_id = relief ? "normal_perturbation" : "noise";
+  pattern.texture_level = relief ? 1 : 2;
+  pattern.texture_levels = relief ? 1 : 3;
+  pattern.texture_frequency = relief ? 6.f : 8.f;
+  pattern.texture_amplitude = relief ? 0.6f : 0.65f;
   status.alternations.clear();
   status.structures.clear();
   auto add = [&](const std::string& id, Side side, bool proxy) {
@@ -208,7 +218,10 @@ int run(int argc, char** argv) {
   publisher.publish(status);
   if (!renderer.waitForStatus(0, 30.0) || !renderer.setView(avatar_view::BodyView::kFront))
     throw std::runtime_error("no avatar drawn: " + renderer.display().modelError());
-  if (options.full) renderer.display().showStatus(fullStatus(status, *renderer.display().model()));
+  if (options.pre_shaded) renderer.display().subProp("Per-pixel relief")->setValue(false);
+  if (options.full)
+    renderer.display().showStatus(fullStatus(status, *renderer.display().model(), options.relief));
+  const avatar_view::ReliefStatus& relief = renderer.display().reliefStatus();
   // rviz renders at most its "Frame Rate" (default 30) per second; uncapped here to measure
   // what the frame costs.
   renderer.manager()
@@ -218,7 +231,11 @@ int run(int argc, char** argv) {
       ->setValue(1000);
   std::cout << "status: " << renderer.display().drawState().items.size()
             << " encoded entries drawn, " << options.width << "x" << options.height << ", "
-            << options.frames << " frames per mode\n";
+            << options.frames << " frames per mode; relief: "
+            << (!relief.needed     ? "none"
+                : relief.per_pixel ? "per pixel (GLSL)"
+                                   : "pre-shaded (" + relief.fallback_reason + ")")
+            << "\n";
   const RenderCounter counter;
   for (bool transparency : {true, false}) {
     renderer.setTransparency(transparency);

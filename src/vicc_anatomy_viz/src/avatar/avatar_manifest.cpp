@@ -40,20 +40,97 @@ MeshSource readMeshSource(const Cursor& item, const std::filesystem::path& direc
   return source;
 }
 
+/// The keys every generated part has, and those of its section shape.
+const std::vector<std::string> kShapeKeys = {"bone",    "section", "from", "to",
+                                             "azimuth", "profile", "tilt"};
+const std::vector<std::string> kEllipseKeys = {"depth", "thickness", "width"};
+const std::vector<std::string> kSectorKeys = {"span", "inner", "outer"};
+const std::vector<std::string> kCavityKeys = {"inset", "half", "fissure"};
+
+SectionShape readSection(const Cursor& item, std::vector<std::string>& allowed) {
+  const std::string name = item.string("section", "ellipse");
+  const auto allow = [&](const std::vector<std::string>& keys) {
+    allowed.insert(allowed.end(), keys.begin(), keys.end());
+  };
+  if (name == "ellipse") {
+    allow(kEllipseKeys);
+    return SectionShape::kEllipse;
+  }
+  if (name == "sector") {
+    allow(kSectorKeys);
+    return SectionShape::kSector;
+  }
+  if (name == "cavity") {
+    allow(kCavityKeys);
+    return SectionShape::kCavity;
+  }
+  item.child("section").fail("section must be ellipse, sector or cavity, not '" + name + "'");
+}
+
+void readEllipse(const Cursor& item, GeneratedShape& shape) {
+  shape.depth = number(item, "depth", shape.depth);
+  shape.thickness = number(item, "thickness", shape.thickness);
+  shape.width = number(item, "width", shape.width);
+  if (!(shape.depth >= 0 && shape.depth < 1)) item.fail("depth must be in [0, 1)");
+  if (!(shape.thickness > 0 && shape.thickness < 1)) item.fail("thickness must be in (0, 1)");
+  if (!(shape.width > 0)) item.fail("width must be positive");
+}
+
+void readSector(const Cursor& item, GeneratedShape& shape) {
+  shape.span = number(item, "span", shape.span);
+  shape.inner = number(item, "inner", shape.inner);
+  shape.outer = number(item, "outer", shape.outer);
+  if (!(shape.span > 0 && shape.span < 360)) item.fail("span must be in (0, 360) degrees");
+  if (!(shape.inner > 0 && shape.inner < shape.outer && shape.outer < 1))
+    item.fail("sector needs 0 < inner < outer < 1");
+}
+
+void readCavity(const Cursor& item, GeneratedShape& shape) {
+  shape.inset = number(item, "inset", shape.inset);
+  shape.fissure = number(item, "fissure", shape.fissure);
+  const std::string half = item.string("half", "none");
+  const std::optional<Side> side = sideFromString(half);
+  if (!side) item.child("half").fail("half must be left, right or none, not '" + half + "'");
+  shape.half = *side;
+  if (!(shape.inset >= 0)) item.fail("inset must be >= 0");
+  if (!(shape.fissure >= 0)) item.fail("fissure must be >= 0");
+}
+
+/// `profile: e` (both ends) or `profile: [proximal, distal]`.
+void readProfile(const Cursor& item, GeneratedShape& shape) {
+  if (!item.has("profile")) return;
+  const Cursor profile = item.child("profile");
+  std::vector<float> exponents;
+  if (profile.isSequence()) {
+    for (const Cursor& value : profile.items())
+      exponents.push_back(static_cast<float>(value.asDouble()));
+  } else {
+    exponents.push_back(static_cast<float>(profile.asDouble()));
+  }
+  if (exponents.size() == 1) exponents.push_back(exponents.front());
+  if (exponents.size() != 2) profile.fail("profile is one exponent or [proximal, distal]");
+  for (float exponent : exponents)
+    if (!(exponent > 0 && exponent <= 2)) profile.fail("profile exponents must be in (0, 2]");
+  shape.profile_proximal = exponents[0];
+  shape.profile_distal = exponents[1];
+}
+
 GeneratedShape readShape(const Cursor& item) {
-  item.allowOnly({"bone", "from", "to", "azimuth", "depth", "thickness", "width"});
+  std::vector<std::string> allowed = kShapeKeys;
   GeneratedShape shape;
+  shape.section = readSection(item, allowed);
+  item.allowOnly(allowed);
   shape.bone = item.string("bone");
   shape.from = number(item, "from", shape.from);
   shape.to = number(item, "to", shape.to);
   shape.azimuth = number(item, "azimuth", shape.azimuth);
-  shape.depth = number(item, "depth", shape.depth);
-  shape.thickness = number(item, "thickness", shape.thickness);
-  shape.width = number(item, "width", shape.width);
+  readProfile(item, shape);
+  shape.tilt = number(item, "tilt", shape.tilt);
+  if (!(std::fabs(shape.tilt) < 60)) item.fail("tilt must be within -60 and 60 degrees");
   if (!(shape.to > shape.from)) item.fail("'to' must be greater than 'from'");
-  if (!(shape.depth >= 0 && shape.depth < 1)) item.fail("depth must be in [0, 1)");
-  if (!(shape.thickness > 0 && shape.thickness < 1)) item.fail("thickness must be in (0, 1)");
-  if (!(shape.width > 0)) item.fail("width must be positive");
+  if (shape.section == SectionShape::kEllipse) readEllipse(item, shape);
+  if (shape.section == SectionShape::kSector) readSector(item, shape);
+  if (shape.section == SectionShape::kCavity) readCavity(item, shape);
   return shape;
 }
 

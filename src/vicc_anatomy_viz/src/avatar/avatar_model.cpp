@@ -36,8 +36,8 @@ AvatarStructure makeStructure(const AvatarBuild& build, const StructureEntry& en
   const TriangleMesh& skin = build.model.skin;
   if (!entry.generated.empty()) {
     for (const GeneratedShape& part : entry.generated)
-      appendMeshPart(structure.mesh, generateSpindle(skin, build.landmarks, part, side,
-                                                     kStructureSkinMargin, what));
+      appendMeshPart(structure.mesh,
+                     generateShape(skin, build.landmarks, part, side, kStructureSkinMargin, what));
   } else if (entry.mesh) {
     structure.mesh = loadAtlasMesh(*entry.mesh);
   }

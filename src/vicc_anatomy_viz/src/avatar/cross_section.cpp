@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <unordered_map>
+#include <utility>
 
 namespace vicc_anatomy_viz::avatar {
 
@@ -69,6 +70,13 @@ Eigen::Vector2f SectionPlane::project(const Eigen::Vector3f& point) const {
 
 Eigen::Vector3f SectionPlane::lift(const Eigen::Vector2f& point) const {
   return origin + point.x() * u + point.y() * v;
+}
+
+SectionLoop SectionLoop::fromPoints(std::vector<Eigen::Vector2f> points) {
+  SectionLoop loop;
+  loop.points = std::move(points);
+  if (!loop.points.empty()) computeShape(loop);
+  return loop;
 }
 
 bool SectionLoop::contains(const Eigen::Vector2f& point) const {

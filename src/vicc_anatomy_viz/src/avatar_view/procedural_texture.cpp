@@ -13,13 +13,6 @@ constexpr float kPi = 3.14159265f;
 /// The darkest modulation: the category's hue stays readable inside the pattern.
 constexpr float kDarkest = 0.45f;
 
-/// Strength in [0, 1]: the amplitude, scaled by how far up its levels the texture is.
-float strength(const TextureState& texture) {
-  if (texture.levels <= 0 || texture.level <= 0) return 0.f;
-  const float level = static_cast<float>(texture.level) / static_cast<float>(texture.levels);
-  return std::clamp(texture.amplitude, 0.f, 1.f) * std::max(level, 0.34f);
-}
-
 std::uint8_t toByte(float value) {
   return static_cast<std::uint8_t>(std::lround(std::clamp(value, 0.f, 1.f) * 255.f));
 }
@@ -56,12 +49,18 @@ void fillNoise(GreyImage& image, float amount, unsigned seed) {
 
 }  // namespace
 
+float textureStrength(const TextureState& texture) {
+  if (texture.levels <= 0 || texture.level <= 0) return 0.f;
+  const float level = static_cast<float>(texture.level) / static_cast<float>(texture.levels);
+  return std::clamp(texture.amplitude, 0.f, 1.f) * std::max(level, 0.34f);
+}
+
 GreyImage textureImage(const TextureState& texture, int size) {
   GreyImage image;
   const int cells = kTextureCellsPerTile;
   image.size = std::max(cells, (size + cells - 1) / cells * cells);
   image.pixels.assign(static_cast<std::size_t>(image.size) * image.size, 255);
-  const float amount = strength(texture);
+  const float amount = textureStrength(texture);
   if (texture.kind == TextureKind::kNormalPerturbation) fillBumps(image, 3.f * amount);
   if (texture.kind == TextureKind::kNoise) fillNoise(image, amount, 46u + texture.level);
   return image;

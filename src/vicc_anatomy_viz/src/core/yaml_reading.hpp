@@ -27,6 +27,7 @@ class Cursor {
 
   const std::string& path() const { return path_; }
   bool isMap() const { return node_ && node_->kind == YamlNode::Kind::kMap; }
+  bool isSequence() const { return node_ && node_->kind == YamlNode::Kind::kSequence; }
   /// "file:line: path" for messages.
   std::string where() const;
   [[noreturn]] void fail(const std::string& message) const;

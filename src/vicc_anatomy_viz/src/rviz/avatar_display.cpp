@@ -74,6 +74,11 @@ AvatarDisplay::AvatarDisplay() {
       "Seconds each category is shown where several share a structure (0: no alternation).", this,
       SLOT(updateOptions()));
   alternation_period_property_->setMin(0.0f);
+  relief_property_ = new rviz::BoolProperty(
+      "Per-pixel relief", true,
+      "Light the pain trigger's normal-perturbation texture per pixel (GLSL); off: the "
+      "pre-shaded bump texture.",
+      this, SLOT(updateOptions()));
   legend_property_ = new rviz::BoolProperty("Legend", true, "Show the category legend.", this,
                                             SLOT(updateOptions()));
 }
@@ -161,7 +166,9 @@ void AvatarDisplay::updateOptions() {
   options.skin_alpha = skin_alpha_property_->getFloat();
   options.see_through_alpha = see_through_alpha_property_->getFloat();
   options.alternation_period_s = alternation_period_property_->getFloat();
+  options.relief = relief_property_->getBool();
   visual_->setOptions(options);
+  updateReliefStatus();
   if (legend_) legend_->setVisible(legend_property_->getBool() && isEnabled());
   if (selection_) selection_->setVisible(isEnabled());
   context_->queueRender();
@@ -200,8 +207,26 @@ void AvatarDisplay::redraw() {
   status_age_s_ = 0.0;
   if (visual_)
     visual_->setState(draw_state_, [this](const std::string& text) { showSelection(text); });
+  updateReliefStatus();
   updateLegend();
   context_->queueRender();
+}
+
+void AvatarDisplay::updateReliefStatus() {
+  if (!visual_) return;
+  relief_status_ = visual_->reliefStatus();
+  const avatar_view::ReliefStatus& relief = relief_status_;
+  if (!relief.needed) {
+    deleteStatus("Relief");
+  } else if (relief.per_pixel) {
+    setStatus(rviz::StatusProperty::Ok, "Relief",
+              "pain trigger: per-pixel normal perturbation (GLSL)");
+  } else {
+    // Never an empty structure: the pre-shaded texture keeps the category's colour.
+    setStatus(relief.unavailable ? rviz::StatusProperty::Warn : rviz::StatusProperty::Ok, "Relief",
+              QString::fromStdString("pain trigger: pre-shaded bump texture (" +
+                                     relief.fallback_reason + ")"));
+  }
 }
 
 void AvatarDisplay::updateLegend() {

@@ -1,5 +1,6 @@
 #include "vicc_anatomy_viz/rviz/avatar_materials.hpp"
 
+#include <OGRE/OgreException.h>
 #include <OGRE/OgreImage.h>
 #include <OGRE/OgreMaterialManager.h>
 #include <OGRE/OgrePass.h>
@@ -9,6 +10,8 @@
 #include <algorithm>
 
 #include "vicc_anatomy_viz/avatar_view/procedural_texture.hpp"
+#include "vicc_anatomy_viz/avatar_view/relief_shading.hpp"
+#include "vicc_anatomy_viz/rviz/relief_program.hpp"
 
 namespace vicc_anatomy_viz::rviz_plugin {
 namespace {
@@ -97,6 +100,41 @@ void AvatarMaterials::applyInnerOpacity(Encoded& encoded) const {
   pass.setDepthWriteEnabled(true);
 }
 
+void AvatarMaterials::applyTexture(const Ogre::MaterialPtr& material,
+                                   const avatar_view::TextureState& state) {
+  if (state.kind == avatar_view::TextureKind::kNone) return;
+  Ogre::Pass& pass = firstPass(material);
+  const avatar_view::ReliefParameters relief = avatar_view::reliefParameters(state);
+  if (relief.active()) {
+    relief_status_.needed = true;
+    std::string why;
+    if (!relief_enabled_) {
+      relief_status_.fallback_reason = "per-pixel relief switched off";
+    } else if (!reliefProgramsAvailable(why)) {
+      relief_status_.fallback_reason = why;
+      relief_status_.unavailable = true;
+    } else {
+      try {
+        applyReliefPrograms(pass, relief);
+        material->load();
+        if (!material->getSupportedTechniques().empty()) {
+          relief_status_.per_pixel = true;
+          return;
+        }
+        relief_status_.fallback_reason = "the relief programs are not supported here: " +
+                                         material->getUnsupportedTechniquesExplanation();
+      } catch (const Ogre::Exception& error) {
+        relief_status_.fallback_reason = "the relief programs failed: " + error.getDescription();
+      }
+      relief_status_.unavailable = true;
+      pass.setVertexProgram("");
+      pass.setFragmentProgram("");
+    }
+  }
+  pass.createTextureUnitState()->setTexture(texture(state));
+  if (material->isLoaded()) material->compile();
+}
+
 std::vector<std::string> AvatarMaterials::setEncoded(
     const std::vector<avatar_view::MaterialGroup>& groups) {
   clearEncoded();
@@ -106,12 +144,13 @@ std::vector<std::string> AvatarMaterials::setEncoded(
     const Rgba& c = group.color;
     Encoded encoded{plainMaterial(names.back(), Ogre::ColourValue(c.r, c.g, c.b, c.a)), c.a,
                     group.inner};
-    if (group.texture.kind != avatar_view::TextureKind::kNone)
-      firstPass(encoded.material).createTextureUnitState()->setTexture(texture(group.texture));
+    applyTexture(encoded.material, group.texture);
     applyInnerOpacity(encoded);
     encoded.material->load();
     encoded_.push_back(encoded);
   }
+  // Per pixel only if every relief material got its programs.
+  if (!relief_status_.fallback_reason.empty()) relief_status_.per_pixel = false;
   return names;
 }
 
@@ -126,6 +165,7 @@ void AvatarMaterials::clearEncoded() {
   for (const auto& entry : textures_) Ogre::TextureManager::getSingleton().remove(entry.second);
   encoded_.clear();
   textures_.clear();
+  relief_status_ = avatar_view::ReliefStatus{};
 }
 
 }  // namespace vicc_anatomy_viz::rviz_plugin

@@ -134,8 +134,10 @@ void AvatarVisual::setState(const avatar_view::AvatarDrawState& state,
 }
 
 void AvatarVisual::setOptions(const VisualOptions& options) {
-  const bool rebuild = options.alternation_period_s != options_.alternation_period_s;
+  const bool rebuild = options.alternation_period_s != options_.alternation_period_s ||
+                       options.relief != options_.relief;
   options_ = options;
+  materials_.setReliefEnabled(options_.relief);
   materials_.setSkinAlpha(options_.skin_alpha);
   materials_.setInnerOpacity(innerOpacity(options_));
   stencil_.setEnabled(innerOpacity(options_) > 0.f);

@@ -96,6 +96,33 @@ TEST(AvatarManifestTest, MisspeltKeysAndBadShapesAreRejected) {
             std::string::npos);
 }
 
+TEST(AvatarManifestTest, SectionShapesTakeOnlyTheirOwnKeys) {
+  const auto soleus = [](const std::string& generated) {
+    return errorOf(manifestWith(kHumanZae,
+                                "  - {id: soleus, sides: [left], region: r, system: s,\n"
+                                "     generated: " +
+                                    generated + "}\n"));
+  };
+  EXPECT_NE(soleus("{bone: shank, section: wedge}").find("ellipse, sector or cavity"),
+            std::string::npos);
+  // An ellipse has no span, a sector no thickness: a key of the wrong shape is named.
+  EXPECT_NE(soleus("{bone: shank, span: 40}").find("span"), std::string::npos);
+  EXPECT_NE(soleus("{bone: shank, section: sector, thickness: 0.3}").find("thickness"),
+            std::string::npos);
+  EXPECT_NE(soleus("{bone: shank, section: sector, inner: 0.6, outer: 0.5}")
+                .find("0 < inner < outer < 1"),
+            std::string::npos);
+  EXPECT_NE(soleus("{bone: shank, section: sector, span: 400}").find("span"), std::string::npos);
+  EXPECT_NE(soleus("{bone: shank, section: cavity, half: up}").find("half"), std::string::npos);
+  EXPECT_NE(soleus("{bone: shank, profile: [0.5, 0.6, 0.7]}").find("[proximal, distal]"),
+            std::string::npos);
+  EXPECT_NE(soleus("{bone: shank, profile: 0}").find("profile"), std::string::npos);
+  EXPECT_NE(soleus("{bone: shank, tilt: 75}").find("tilt"), std::string::npos);
+  EXPECT_EQ(soleus("{bone: shank, section: sector, span: 60, inner: 0.3, outer: 0.8, "
+                   "profile: [0.4, 0.7], tilt: 10}"),
+            "");
+}
+
 TEST(AvatarManifestTest, NonFiniteNumbersAreRejected) {
   // The YAML reader refuses .nan and .inf; the manifest also what overflows to infinity.
   for (const std::string value : {".nan", ".inf", "-.inf", "1e999"}) {

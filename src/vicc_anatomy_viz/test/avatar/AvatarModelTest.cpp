@@ -2,9 +2,13 @@
 // symmetry, hierarchy and FMA ids, proxies on the skin.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <cmath>
+#include <cstdio>
 
 #include "avatar_test_support.hpp"
+#include "vicc_anatomy_viz/avatar/cross_section.hpp"
 #include "vicc_anatomy_viz/avatar/mesh_geometry.hpp"
 
 namespace vicc_anatomy_viz::avatar {
@@ -103,6 +107,124 @@ TEST(AvatarModelTest, MusclesAreSpindlesAlongTheirBoneNotBoxes) {
   }
   EXPECT_GT(high - low, 0.6f * thigh.length());
   EXPECT_GT(signedVolume(quadriceps->mesh) * 1e6, 300.0);  // cm^3
+}
+
+/// A muscle's belly in the plane across its bone at one fraction: its share of the limb's
+/// cross-section (the skin's loop round the bone axis), and the largest gap between the skin
+/// and the belly's outer surface over an arc of azimuths (as a fraction of the axis-to-skin
+/// distance there; 1 where the belly does not reach that azimuth).
+struct BellySection {
+  double share = 0;
+  float deepest_gap = 0;
+};
+
+BellySection bellySection(const AvatarStructure& muscle, const BoneFrame& bone, float fraction,
+                          float first_azimuth, float last_azimuth) {
+  const SectionPlane plane = SectionPlane::through(bone.at(fraction), bone.axis, bone.anterior);
+  const std::vector<SectionLoop> belly = sliceMesh(muscle.mesh, plane);
+  const std::vector<SectionLoop> skin = sliceMesh(defaultAvatar().model.skin, plane);
+  const SectionLoop* limb = loopContaining(skin, Eigen::Vector2f::Zero());
+  BellySection result;
+  if (!limb) return result;
+  for (const SectionLoop& loop : belly) result.share += loop.area / limb->area;
+  for (float azimuth = first_azimuth; azimuth <= last_azimuth; azimuth += 5.f) {
+    const Eigen::Vector3f d3 = bone.direction(azimuth);
+    const Eigen::Vector2f direction =
+        Eigen::Vector2f(d3.dot(plane.u), d3.dot(plane.v)).normalized();
+    const float reach = limb->rayDistance(Eigen::Vector2f::Zero(), direction).value_or(0.f);
+    float gap = reach;  // inward from the skin to the first belly contour
+    for (const SectionLoop& loop : belly)
+      gap = std::min(gap, loop.rayDistance(reach * direction, -direction).value_or(reach));
+    result.deepest_gap = std::max(result.deepest_gap, reach > 0 ? gap / reach : 1.f);
+  }
+  return result;
+}
+
+TEST(AvatarModelTest, KeyMuscleBelliesFillTheirPartOfTheLimbUnderTheSkin) {
+  // Bellies sized from the limb's cross-section, like the compartments of an MRI slice: their
+  // share of the section at mid-belly, and all across their arc of the circumference just
+  // under the skin (the subcutaneous layer: 12 % of the axis-to-skin distance, plus where the
+  // belly narrows towards its ends). The earlier elliptic spindles curved away from the skin
+  // at their flanks, so the skin hid them there and they looked thin.
+  struct Belly {
+    std::string id, bone;
+    float at, first_azimuth, last_azimuth;
+    double least_share, most_share;
+  };
+  const std::vector<Belly> bellies = {
+      {"quadriceps_femoris", "thigh", 0.5f, -50, 70, 0.25, 0.6},
+      {"biceps_femoris", "thigh", 0.5f, 125, 155, 0.04, 0.2},
+      {"tibialis_anterior", "shank", 0.35f, 10, 40, 0.04, 0.2},
+      {"gastrocnemius", "shank", 0.3f, 130, 230, 0.15, 0.45},
+      {"biceps_brachii", "upper_arm", 0.5f, -25, 25, 0.08, 0.3},
+      {"triceps_brachii", "upper_arm", 0.5f, 140, 220, 0.15, 0.45},
+      {"flexor_carpi_ulnaris", "forearm", 0.3f, -85, -65, 0.03, 0.15}};
+  for (const Belly& belly : bellies) {
+    for (Side side : {Side::kLeft, Side::kRight}) {
+      const AvatarStructure* muscle = defaultAvatar().model.structure(belly.id, side);
+      ASSERT_NE(muscle, nullptr) << belly.id;
+      const BellySection section =
+          bellySection(*muscle, defaultAvatar().landmarks.bone(belly.bone, side), belly.at,
+                       belly.first_azimuth, belly.last_azimuth);
+      std::printf("%s (%s): %.1f %% of the %s's section, deepest under the skin %.0f %%\n",
+                  belly.id.c_str(), toString(side).c_str(), 100 * section.share, belly.bone.c_str(),
+                  100 * section.deepest_gap);
+      EXPECT_GE(section.share, belly.least_share) << belly.id << " " << toString(side);
+      EXPECT_LE(section.share, belly.most_share) << belly.id << " " << toString(side);
+      EXPECT_LT(section.deepest_gap, 0.2f) << belly.id << " " << toString(side);
+    }
+  }
+}
+
+TEST(AvatarModelTest, TheBrainIsTwoHemispheresFillingTheCranium) {
+  const AvatarBuild& build = defaultAvatar();
+  const AvatarStructure* brain = build.model.structure("brain", Side::kNone);
+  ASSERT_NE(brain, nullptr);
+  Eigen::AlignedBox3f box;
+  for (const Eigen::Vector3f& v : brain->mesh.vertices) box.extend(v);
+  const Eigen::Vector3f size = box.sizes();
+  const double volume_cm3 = signedVolume(brain->mesh) * 1e6;
+  std::printf("brain: %.1f x %.1f x %.1f cm, %.0f cm^3\n", 100 * size.x(), 100 * size.y(),
+              100 * size.z(), volume_cm3);
+  // A cerebrum: longer than wide, wider than high (adult: about 16 x 13 x 10 cm).
+  EXPECT_GT(size.x(), size.y());
+  EXPECT_GT(size.y(), size.z());
+  // Filling the cranium: at its mid-height most of the head's length and width, inside the
+  // scalp and skull (the earlier spindle: 10 x 9 cm, 133 cm^3, a third of the width up top).
+  const float middle = box.center().z();
+  const SectionPlane level =
+      SectionPlane::through(Eigen::Vector3f(0.f, 0.f, middle), Eigen::Vector3f::UnitZ());
+  const std::vector<SectionLoop> head_loops = sliceMesh(build.model.skin, level);
+  const SectionLoop* head = loopContaining(head_loops, Eigen::Vector2f::Zero());
+  ASSERT_NE(head, nullptr);
+  Eigen::AlignedBox2f slab;
+  for (const Eigen::Vector3f& v : brain->mesh.vertices)
+    if (std::fabs(v.z() - middle) < 0.006f) slab.extend(Eigen::Vector2f(v.x(), v.y()));
+  const Eigen::Vector2f head_size = head->max_corner - head->min_corner;
+  std::printf("at mid-height: brain %.1f x %.1f cm in a head of %.1f x %.1f cm\n",
+              100 * slab.sizes().x(), 100 * slab.sizes().y(), 100 * head_size.x(),
+              100 * head_size.y());
+  EXPECT_GT(slab.sizes().x(), 0.75f * head_size.x());
+  EXPECT_GT(slab.sizes().y(), 0.75f * head_size.y());
+  EXPECT_LT(slab.sizes().x(), head_size.x() - 0.016f);
+  EXPECT_LT(slab.sizes().y(), head_size.y() - 0.016f);
+  EXPECT_GT(volume_cm3, 400.0);
+  // Inside the cranium: its base about the level of the occiput (the base rises towards the
+  // orbits), the top under scalp and skull.
+  const float vertex = build.landmarks.height;
+  EXPECT_GE(box.min().z(), build.landmarks.point("head_centre").z() - 0.01f);
+  EXPECT_GT(box.max().z(), vertex - 0.03f);
+  EXPECT_LT(box.max().z(), vertex - 0.008f);
+  // Two hemispheres: nothing in the longitudinal fissure.
+  for (const Eigen::Vector3f& v : brain->mesh.vertices) ASSERT_GT(std::fabs(v.y()), 0.0015f);
+  // A dome, not the tent of a spindle: three quarters up it is still most of its width.
+  const auto width_at = [&](float z) {
+    float widest = 0;
+    for (const Eigen::Vector3f& v : brain->mesh.vertices)
+      if (std::fabs(v.z() - z) < 0.006f) widest = std::max(widest, 2 * std::fabs(v.y()));
+    return widest;
+  };
+  EXPECT_GT(width_at(box.min().z() + 0.75f * size.z()), 0.7f * size.y());
 }
 
 TEST(AvatarModelTest, LeftAndRightStructuresAreMirrorImages) {
@@ -256,9 +378,12 @@ TEST(AvatarModelTest, TheExtensorHallucisIsSeenFromTheFrontAndReachesTheBigToe) 
     const AvatarStructure* ta = build.model.structure("tibialis_anterior", side);
     const AvatarStructure* edl = build.model.structure("extensor_digitorum_longus", side);
     ASSERT_TRUE(ehl && ta && edl);
-    // Its own finding must be readable from the front: not hidden behind TA and EDL (measured
-    // 87 % seen; the earlier shank-only spindle behind the TA: 68 %).
-    EXPECT_GT(shareSeenFromTheFront(*ehl, {ta, edl}), 0.8) << toString(side);
+    // Its own finding must be readable from the front: not hidden behind TA and EDL (the
+    // earlier shank-only spindle behind the TA: 68 % seen).
+    const double seen = shareSeenFromTheFront(*ehl, {ta, edl});
+    std::printf("EHL (%s): %.0f %% of its front-facing surface seen\n", toString(side).c_str(),
+                100 * seen);
+    EXPECT_GT(seen, 0.8) << toString(side);
     // The tendon runs over the dorsum of the foot towards the big toe (medial of the foot's
     // centre line), in front of and below the ankle.
     const Eigen::Vector3f& ankle = build.landmarks.point("ankle_" + toString(side));

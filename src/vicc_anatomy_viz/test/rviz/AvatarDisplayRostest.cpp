@@ -16,10 +16,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
+#include <vector>
 
-#include "vicc_anatomy_viz/patient_status_service.hpp"
-#include "vicc_anatomy_viz/record_json.hpp"
+#include "sample_patient_database.hpp"
 #include "vicc_anatomy_viz/rviz/avatar_display.hpp"
 #include "vicc_avatar_snapshot_renderer.hpp"
 
@@ -34,25 +35,6 @@ constexpr double kWaitS = 30.0;
 /// The skin and context are neutral grey (saturation < 0.03); the palest encoded colour seen
 /// through the skin keeps about 0.25.
 constexpr double kMinSaturation = 0.12;
-
-std::string databasePath() {
-  std::string db;
-  ros::param::get("~db", db);
-  return db;
-}
-
-/// The sample patient written straight into the server's database file (the server opens
-/// it on first use).
-void recordFigurePatient() {
-  const std::string path = std::string(VICC_TEST_PACKAGE_DIR) + "/data/samples/fig4_6_patient.json";
-  PatientStatusConfig config;
-  config.encoding_config = defaultEncodingConfigPath();
-  config.anatomy_config = defaultAnatomyConfigPath();
-  config.store.path = databasePath();
-  PatientStatusService service(config);
-  service.record(examinationsFromJson(parseJsonText(readTextFile(path), path)),
-                 WriteMode::kRejectExisting);
-}
 
 /// What a window of pixels around a point shows: the circular mean hue of its saturated
 /// pixels and how many there are.
@@ -93,20 +75,25 @@ float hueOf(const Rgba& colour) {
 class AvatarDisplayRostest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    recordFigurePatient();
+    // SDH-046 (Fig. 4.6) and the other sample cases (SDH-101: left L4 pain on stress).
+    std::vector<Examination> examinations = rviz_test::figurePatientExaminations();
+    for (Examination& examination : rviz_test::sampleExaminations("cases.json"))
+      examinations.push_back(std::move(examination));
+    rviz_test::recordExaminations(examinations);
     renderer_ = std::make_unique<snapshot::AvatarRenderer>(kWidth, kHeight,
                                                            "/patient_status_server/status");
   }
   static void TearDownTestSuite() {
     renderer_.reset();
-    for (const char* suffix : {"", "-wal", "-shm"}) std::remove((databasePath() + suffix).c_str());
+    rviz_test::removeDatabase();
   }
 
   /// Selects (patient, date, filter) at the server and renders the status it publishes.
-  QImage show(const std::string& date, const std::vector<std::string>& hidden, BodyView view) {
+  QImage show(const std::string& date, const std::vector<std::string>& hidden, BodyView view,
+              const std::string& patient = "SDH-046") {
     const unsigned drawn = renderer_->display().drawnStatusCount();
     vicc_msgs::SelectPatient select;
-    select.request.patient_id = "SDH-046";
+    select.request.patient_id = patient;
     select.request.date = date;
     select.request.hidden_categories = hidden;
     EXPECT_TRUE(ros::service::waitForService("/patient_status_server/select_patient", 20000));
@@ -236,6 +223,77 @@ TEST_F(AvatarDisplayRostest, PreOperativeFindingsAreDrawnInTheirColoursOnTheirSi
                "left tibialis");
   // From the front the patient's right is on the image's left.
   EXPECT_LT(project(structureCentre("tibialis_anterior", Side::kRight)).x(), kWidth / 2.f);
+}
+
+/// Relief as the eye reads it at whole-body scale: the spread (standard deviation) of the
+/// brightness, averaged over 4 x 4 pixel blocks (the bumps are about 7 pixels across; finer
+/// aliasing patterns of a minified texture average out), over the blocks in `hue` (the
+/// finding's pixels) in a window of `radius` around a pixel.
+double reliefContrast(const QImage& image, const Eigen::Vector2f& centre, int radius, float hue) {
+  constexpr int kBlock = 4;
+  const auto in_hue = [&](const QColor& colour) {
+    return colour.hsvSaturationF() >= kMinSaturation && colour.hsvHue() >= 0 &&
+           hueDistance(static_cast<float>(colour.hsvHue()), hue) < kHueToleranceDeg;
+  };
+  std::vector<double> blocks;
+  for (int dy = -radius; dy < radius; ++dy) {
+    for (int dx = -radius; dx < radius; ++dx) {
+      const QPoint corner(static_cast<int>(centre.x()) + dx, static_cast<int>(centre.y()) + dy);
+      double sum = 0.0;
+      bool inside = true;
+      for (int by = 0; by < kBlock && inside; ++by)
+        for (int bx = 0; bx < kBlock && inside; ++bx) {
+          const QPoint point = corner + QPoint(bx, by);
+          inside = image.rect().contains(point) && in_hue(image.pixelColor(point));
+          if (inside) sum += image.pixelColor(point).valueF();
+        }
+      if (inside) blocks.push_back(sum / (kBlock * kBlock));
+    }
+  }
+  if (blocks.size() < 30) return 0.0;
+  double mean = 0.0, spread = 0.0;
+  for (double value : blocks) mean += value / static_cast<double>(blocks.size());
+  for (double value : blocks) spread += (value - mean) * (value - mean);
+  return std::sqrt(spread / static_cast<double>(blocks.size()));
+}
+
+TEST_F(AvatarDisplayRostest, ThePainTriggerIsAReliefLitPerPixelOrSaysWhyNot) {
+  // SDH-101 (thesis Fig. 4.5B): left L4 radicular pain on stress, the normal perturbation.
+  const QImage shaded = show("2023-05-02", {}, BodyView::kFront, "SDH-101");
+  const auto* pain = drawn("radicular_pain", "dermatome_L4", Side::kLeft);
+  ASSERT_NE(pain, nullptr);
+  ASSERT_EQ(pain->texture.kind, avatar_view::TextureKind::kNormalPerturbation);
+  const auto& relief = renderer_->display().reliefStatus();
+  EXPECT_TRUE(relief.needed);
+  EXPECT_TRUE(relief.per_pixel) << relief.fallback_reason;
+  const Eigen::Vector3f band = facingPoint("dermatome_L4", Side::kLeft);
+  expectHue(shaded, band, pain->color, "left L4 pain under its relief");
+  const double per_pixel = reliefContrast(shaded, project(band), 10, hueOf(pain->color));
+
+  rviz::Property* switch_off = renderer_->display().subProp("Per-pixel relief");
+  ASSERT_NE(switch_off, nullptr);
+  switch_off->setValue(false);
+  const QImage pre_shaded = renderer_->grab();
+  EXPECT_FALSE(renderer_->display().reliefStatus().per_pixel);
+  EXPECT_NE(renderer_->display().reliefStatus().fallback_reason.find("switched off"),
+            std::string::npos);
+  switch_off->setValue(true);
+  // The fallback keeps the band in its colour (never an empty or black structure).
+  expectHue(pre_shaded, band, pain->color, "left L4 pain, pre-shaded");
+  const double baked = reliefContrast(pre_shaded, project(band), 10, hueOf(pain->color));
+  std::printf("L4 pain relief contrast: per pixel %.4f, pre-shaded %.4f\n", per_pixel, baked);
+  // For a look at the frames: VICC_AVATAR_RELIEF_FRAMES=DIR saves them there.
+  if (const char* dir = std::getenv("VICC_AVATAR_RELIEF_FRAMES")) {
+    shaded.save(QString::fromStdString(std::string(dir) + "/relief_per_pixel.png"));
+    pre_shaded.save(QString::fromStdString(std::string(dir) + "/relief_pre_shaded.png"));
+  }
+  // The relief reads at whole-body scale: bumps a few pixels across, where the pre-shaded
+  // texture, minified, is only aliasing finer than that.
+  EXPECT_GT(per_pixel, 0.05);
+  EXPECT_GT(per_pixel, 2.0 * baked);
+  // A status without the trigger needs no relief.
+  show("2023-03-06", {}, BodyView::kFront);
+  EXPECT_FALSE(renderer_->display().reliefStatus().needed);
 }
 
 TEST_F(AvatarDisplayRostest, TheLaterDateShowsThePostOperativeStatus) {

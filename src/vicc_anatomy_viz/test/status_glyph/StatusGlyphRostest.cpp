@@ -26,9 +26,8 @@
 #include <memory>
 #include <vector>
 
+#include "../rviz/sample_patient_database.hpp"
 #include "vicc_anatomy_viz/avatar/avatar_model.hpp"
-#include "vicc_anatomy_viz/patient_status_service.hpp"
-#include "vicc_anatomy_viz/record_json.hpp"
 #include "vicc_anatomy_viz/rviz/avatar_display.hpp"
 #include "vicc_avatar_snapshot_renderer.hpp"
 
@@ -45,22 +44,10 @@ constexpr const char* kMarkerTopic = "/status_glyph_markers/markers";
 constexpr int kColourTolerance = 12;
 constexpr int kMinGlyphPixels = 200;
 
-std::string databasePath() {
-  std::string db;
-  ros::param::get("~db", db);
-  return db;
-}
-
 /// The Fig. 4.6 patient (pre-op 26 mmHg, post-op 12 mmHg) and a later examination that
 /// measured no ICP, written into the server's database.
 void recordPatient() {
-  const std::string path = std::string(VICC_TEST_PACKAGE_DIR) + "/data/samples/fig4_6_patient.json";
-  PatientStatusConfig config;
-  config.encoding_config = defaultEncodingConfigPath();
-  config.anatomy_config = defaultAnatomyConfigPath();
-  config.store.path = databasePath();
-  PatientStatusService service(config);
-  auto examinations = examinationsFromJson(parseJsonText(readTextFile(path), path));
+  auto examinations = rviz_test::figurePatientExaminations();
   Examination without_icp = examinations.back();
   without_icp.taken_at_us += 10LL * 24 * 3600 * 1000000;
   without_icp.findings.erase(
@@ -68,7 +55,7 @@ void recordPatient() {
                      [](const Finding& f) { return f.category == "intracranial_pressure"; }),
       without_icp.findings.end());
   examinations.push_back(without_icp);
-  service.record(examinations, WriteMode::kRejectExisting);
+  rviz_test::recordExaminations(examinations);
 }
 
 bool near(const QColor& a, const QColor& b) {
@@ -129,7 +116,7 @@ class StatusGlyphRostest : public ::testing::Test {
   static void TearDownTestSuite() {
     subscriber_.reset();
     renderer_.reset();
-    for (const char* suffix : {"", "-wal", "-shm"}) std::remove((databasePath() + suffix).c_str());
+    rviz_test::removeDatabase();
   }
   static void onMarkers(const visualization_msgs::MarkerArray& array) { last_ = array; }
 

@@ -34,6 +34,9 @@ struct SectionLoop {
   Eigen::Vector2f min_corner = Eigen::Vector2f::Zero();
   Eigen::Vector2f max_corner = Eigen::Vector2f::Zero();
 
+  /// A loop through `points` (at least three, in order) with its area, centroid and bounds.
+  static SectionLoop fromPoints(std::vector<Eigen::Vector2f> points);
+
   bool contains(const Eigen::Vector2f& point) const;
   /// Distance from `point` to the contour line.
   float distanceToContour(const Eigen::Vector2f& point) const;

@@ -1,7 +1,8 @@
 #pragma once
-// Inner structures generated from the skin's landmarks: spindles swept along a bone axis,
-// their cross-sections sized from the skin's cross-section so that they lie under the skin,
-// and proxies on the skin above small structures.
+// Inner structures generated from the skin's landmarks: shapes swept along a bone axis (muscle
+// bellies filling a sector of the limb, slender ellipses, organs filling a cavity), their
+// cross-sections sized from the skin's cross-section so that they lie under the skin, and
+// proxies on the skin above small structures.
 
 #include "vicc_anatomy_viz/avatar/avatar_manifest.hpp"
 #include "vicc_anatomy_viz/avatar/avatar_model.hpp"
@@ -9,12 +10,12 @@
 
 namespace vicc_anatomy_viz::avatar {
 
-/// Closed spindle mesh of `shape` on `side`. Every ring vertex lies inside the skin's
-/// cross-section at least `margin` from the skin. ConfigError (naming `what`) when the bone
-/// axis leaves the skin.
-TriangleMesh generateSpindle(const TriangleMesh& skin, const BodyLandmarks& landmarks,
-                             const GeneratedShape& shape, Side side, float margin,
-                             const std::string& what);
+/// Closed mesh of `shape` on `side` (its section at every station, scaled by the belly
+/// profile). Every ring vertex lies inside the skin's cross-section at least `margin` from
+/// the skin. ConfigError (naming `what`) when the bone axis leaves the skin.
+TriangleMesh generateShape(const TriangleMesh& skin, const BodyLandmarks& landmarks,
+                           const GeneratedShape& shape, Side side, float margin,
+                           const std::string& what);
 
 /// The proxy disc on the skin (centre, outward normal, radius) as `placement` says.
 SkinProxy placeProxy(const TriangleMesh& skin, const BodyLandmarks& landmarks,

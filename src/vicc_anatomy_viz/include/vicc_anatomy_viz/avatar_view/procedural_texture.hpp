@@ -21,6 +21,10 @@ struct GreyImage {
   std::vector<std::uint8_t> pixels;  ///< row-major luminance
 };
 
+/// How strong a texture state is, in [0, 1]: its amplitude, scaled by how far up its levels
+/// it is (the lowest level keeps a third, so it stays visible); 0 without a level.
+float textureStrength(const TextureState& texture);
+
 /// The modulation image of a texture state (kNone: a plain white tile). `size` is rounded up
 /// to a multiple of kTextureCellsPerTile.
 GreyImage textureImage(const TextureState& texture, int size);

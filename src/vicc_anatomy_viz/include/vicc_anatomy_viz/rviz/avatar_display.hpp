@@ -17,6 +17,7 @@
 
 #include "vicc_anatomy_viz/avatar/avatar_model.hpp"
 #include "vicc_anatomy_viz/avatar_view/draw_state.hpp"
+#include "vicc_anatomy_viz/avatar_view/relief_shading.hpp"
 #endif
 
 namespace rviz {
@@ -53,6 +54,8 @@ class AvatarDisplay : public rviz::Display {
   vicc_msgs::EncodedStatus lastStatus() const {
     return last_msg_ ? *last_msg_ : vicc_msgs::EncodedStatus();
   }
+  /// How the pain trigger's texture of the last status is drawn (per pixel or pre-shaded).
+  const avatar_view::ReliefStatus& reliefStatus() const { return relief_status_; }
   /// Draws `msg` as if it had arrived on the topic.
   void showStatus(const vicc_msgs::EncodedStatus& msg);
 
@@ -71,6 +74,7 @@ class AvatarDisplay : public rviz::Display {
   void receive(const vicc_msgs::EncodedStatus::ConstPtr& msg);
   void redraw();
   void updateLegend();
+  void updateReliefStatus();
   void showSelection(const std::string& text);
 
   rviz::RosTopicProperty* topic_property_;
@@ -80,6 +84,7 @@ class AvatarDisplay : public rviz::Display {
   rviz::FloatProperty* skin_alpha_property_;
   rviz::FloatProperty* see_through_alpha_property_;
   rviz::FloatProperty* alternation_period_property_;
+  rviz::BoolProperty* relief_property_;
   rviz::BoolProperty* legend_property_;
 
   ros::Subscriber subscriber_;
@@ -91,6 +96,7 @@ class AvatarDisplay : public rviz::Display {
   std::unique_ptr<ScreenOverlay> selection_;
   vicc_msgs::EncodedStatus::ConstPtr last_msg_;
   avatar_view::AvatarDrawState draw_state_;
+  avatar_view::ReliefStatus relief_status_;
   unsigned drawn_status_count_ = 0;
   double status_age_s_ = 0.0;  ///< alternation clock, restarted with every status
 };

@@ -42,6 +42,7 @@ struct VisualOptions {
   float skin_alpha = 1.f;          ///< skin opacity everywhere
   float see_through_alpha = 0.8f;  ///< opacity of an encoded structure seen through the skin
   double alternation_period_s = 1.5;
+  bool relief = true;  ///< the pain trigger's texture lit per pixel (GLSL), else pre-shaded
 };
 
 class AvatarVisual {
@@ -56,6 +57,8 @@ class AvatarVisual {
   void setOptions(const VisualOptions& options);
   /// Alternation and occluder fading for the current time and camera.
   void update(double time_s, const avatar_view::CameraModel& camera);
+  /// How the current status's normal-perturbation texture is drawn.
+  const avatar_view::ReliefStatus& reliefStatus() const { return materials_.reliefStatus(); }
 
  private:
   struct Encoded {
