@@ -30,9 +30,9 @@ double maxAbsoluteError(const std::vector<float>& a, const std::vector<float>& b
 void printHistory(const std::string& path, int size, int iterations) {
   const DiffusionCurveImage image = loadDiffusionCurves(path, size);
   const MultigridOptions defaults;
-  const std::vector<GridProblem> levels =
-      assembleColorLevels(image, Color::Zero(), defaults.coarsest_size);
-  const std::vector<float> direct = solveDirect(levels.front());
+  const GridProblem problem =
+      assembleColorProblem(image, image.width, image.height, 1.0, Color::Zero());
+  const std::vector<float> direct = solveDirect(problem);
   MultigridSolver solver;
   MultigridReport full;
   {
@@ -41,11 +41,11 @@ void printHistory(const std::string& path, int size, int iterations) {
     options.fine_cycles = iterations;
     options.record_residuals = true;
     std::vector<float> values;
-    solver.solve(levels, options, values, &full);
+    solver.solve(problem, options, values, &full);
   }
   MultigridReport stopped;
   std::vector<float> values;
-  solver.solve(levels, defaults, values, &stopped);
+  solver.solve(problem, defaults, values, &stopped);
   std::cout << "\n### " << path.substr(path.find_last_of('/') + 1) << " at " << size
             << " px (default tolerance " << defaults.tolerance << " stops after "
             << stopped.fine_cycles << " iterations, MAE " << meanAbsoluteError(values, direct)
@@ -56,7 +56,7 @@ void printHistory(const std::string& path, int size, int iterations) {
     MultigridOptions options;
     options.tolerance = 0.0;
     options.fine_cycles = k;
-    solver.solve(levels, options, values, nullptr);
+    solver.solve(problem, options, values, nullptr);
     std::cout << "| " << k << " | " << std::scientific << std::setprecision(2) << full.residuals[k]
               << " | "
               << (k < static_cast<int>(full.error_estimates.size()) ? full.error_estimates[k] : NAN)

@@ -77,13 +77,13 @@ Measurement measure(const std::string& path, int size, int repeats) {
   m.converged = result.report.multigrid.converged;
 
   // Accuracy and residual from separate runs, so they do not disturb the timing.
-  const std::vector<GridProblem> levels =
-      assembleColorLevels(image, options.background, options.multigrid.coarsest_size);
+  const GridProblem problem =
+      assembleColorProblem(image, image.width, image.height, 1.0, options.background);
   MultigridOptions recorded = options.multigrid;
   recorded.record_residuals = true;
   MultigridReport report;
-  const std::vector<float> multigrid = solveMultigrid(levels, recorded, &report);
-  const std::vector<float> direct = solveDirect(levels.front());
+  const std::vector<float> multigrid = solveMultigrid(problem, recorded, &report);
+  const std::vector<float> direct = solveDirect(problem);
   m.mae = meanAbsoluteError(multigrid, direct);
   for (size_t i = 0; i < direct.size(); ++i) {
     m.max_error = std::max(m.max_error, std::abs(double(multigrid[i]) - direct[i]));

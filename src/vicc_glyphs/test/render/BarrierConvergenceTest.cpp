@@ -26,11 +26,11 @@ Solve solveAndCompare(const DiffusionCurveImage& image, int iterations = -1) {
     options.fine_cycles = iterations;
     options.record_residuals = true;
   }
-  const std::vector<GridProblem> levels =
-      assembleColorLevels(image, Color::Zero(), options.coarsest_size);
+  const GridProblem problem =
+      assembleColorProblem(image, image.width, image.height, 1.0, Color::Zero());
   Solve solve;
-  const std::vector<float> values = solveMultigrid(levels, options, &solve.report);
-  solve.mae = meanAbsoluteError(values, solveDirect(levels.front()));
+  const std::vector<float> values = solveMultigrid(problem, options, &solve.report);
+  solve.mae = meanAbsoluteError(values, solveDirect(problem));
   return solve;
 }
 
