@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -56,20 +55,25 @@ class Multigrid {
     transfers_.resize(count - 1);
     u_.resize(count);
     f_.resize(count);
-    Stencil regular = kFineRegularStencil;
     for (size_t l = 1; l < count; ++l) {
       CoarseLevel& coarse = coarse_[l - 1];
       resizeCoarseLevel(sizes[l].first, sizes[l].second, coarse);
-      regular = l == 1 ? coarsen(fine_, regular, transfers_[0], coarse, flags_)
-                       : coarsen(coarse_[l - 2], regular, transfers_[l - 1], coarse, flags_);
+      if (l == 1) {
+        coarsen(fine_, transfers_[0], coarse, flags_);
+      } else {
+        coarsen(coarse_[l - 2], transfers_[l - 1], coarse, flags_);
+      }
       allocateField(coarse.size, coarse.stride, coarse.height, u_[l]);
       allocateField(coarse.size, coarse.stride, coarse.height, f_[l]);
     }
     allocateField(fine_.size, fine_.stride, fine_.height, u_[0]);
-    for (Field* field : {&r_, &z_, &p_, &ap_}) {
+    for (Field* field : {&r_, &p_, &ap_}) {
       allocateField(fine_.size, fine_.stride, fine_.height, *field);
     }
-    if (balance_) labelFreeComponents(fine_, components_);
+    // The V-cycles write z only at free pixels (starting from zero without reading it there):
+    // its Dirichlet pixels must read 0.
+    z_.resize(fine_.size);
+    std::fill(z_.begin(), z_.end(), Px{});
     if (count == 1) {
       factoriseCoarsest(fine_);
     } else {
@@ -89,14 +93,15 @@ class Multigrid {
       addDirichletExtension();
       restrictResidual(0, u_[0].data(), nullptr, f_[1].data());
       for (int l = 1; l < coarsest; ++l) {
-        std::fill(u_[l].begin(), u_[l].end(), Px{});
-        restrictResidual(l, u_[l].data(), f_[l].data(), f_[l + 1].data());
+        const Px* f = f_[l].data();
+        restrictFrom(
+            coarse_[l - 1], l, [f](size_t p) { return f[p]; }, f_[l + 1].data());
       }
       solveCoarsest(u_[coarsest].data(), f_[coarsest].data());
       for (int l = coarsest - 1; l >= 1; --l) {
         prolong<false>(l, u_[l + 1].data(), u_[l].data());
         for (int k = 0; k < options_.intermediate_cycles; ++k) {
-          vcycle(l, u_[l].data(), f_[l].data());
+          vcycle(l, u_[l].data(), f_[l].data(), false);
         }
       }
       prolong<true>(0, u_[1].data(), u_[0].data());
@@ -176,32 +181,6 @@ class Multigrid {
     return free_count_ ? std::sqrt(total / (static_cast<double>(free_count_) * C)) : 0.0;
   }
 
-  // Sums term(p) over the free pixels of the finest level (per row in float, then in double).
-  template <class Term>
-  Sum sumOverFree(Term&& term) const {
-    Sum total{};
-    for (int y = 0; y < fine_.height; ++y) {
-      Px row{};
-      for (int p = fine_.index(0, y), end = fine_.index(fine_.width, y); p < end; ++p) {
-        if (!(fine_.mask[p] & kFixed)) row += term(p);
-      }
-      accumulate(total, row);
-    }
-    return total;
-  }
-
-  // The largest magnitude over the free pixels and channels of a field of the finest level.
-  double maxOverFree(const Px* __restrict v) const {
-    Px largest{};
-    for (size_t i = 0; i < fine_.size; ++i) {
-      const Px magnitude = v[i] < 0 ? -v[i] : v[i];  // 0 at Dirichlet pixels and the border
-      largest = magnitude > largest ? magnitude : largest;
-    }
-    double result = 0.0;
-    for (int c = 0; c < C; ++c) result = std::max(result, static_cast<double>(channel(largest, c)));
-    return result;
-  }
-
   // The finest level's start: Dirichlet values, 0 at the free pixels (replaced by FMG's
   // interpolation when there are coarser levels).
   void setDirichletValues() {
@@ -266,7 +245,8 @@ class Multigrid {
   }
 
   // Preconditioned conjugate gradients on the finest level from u_[0]; the preconditioner is
-  // one V-cycle from zero on the residual.
+  // one V-cycle from zero on the residual. r, z, p and A p are 0 at Dirichlet pixels and in the
+  // ghost border, so the passes need no mask.
   void conjugateGradients(FineProgress& progress) {
     const bool until_converged = options_.tolerance > 0.0;
     const bool record = options_.record_residuals || until_converged;
@@ -278,15 +258,22 @@ class Multigrid {
     Px* __restrict p = p_.data();
     Px* __restrict ap = ap_.data();
     for (size_t i = 0; i < size; ++i) r[i] = residualAt(fine_, u, nullptr, i);
-    if (record) progress.residuals.push_back(residualNorm(r));
+    if (record) progress.residuals.push_back(rms(sumRows([&](size_t i) { return r[i] * r[i]; })));
     Sum rz_previous{};
     for (int k = 0; k <= iterations; ++k) {
       const bool last = k == iterations;
       if (last && !until_converged) break;  // a fixed count needs no estimate of the result
-      precondition(r, z);
+      vcycle(0, z, r, true);
+      Px largest{};
+      const Sum rz = sumRows([&](size_t i) {
+        const Px magnitude = z[i] < 0 ? -z[i] : z[i];
+        largest = magnitude > largest ? magnitude : largest;
+        return r[i] * z[i];
+      });
       if (record) {
         // z = B r approximates the error of u (exactly if the V-cycle inverted A).
-        const double estimate = maxOverFree(z);
+        double estimate = 0.0;
+        for (int c = 0; c < C; ++c) estimate = std::max(estimate, double(channel(largest, c)));
         progress.error_estimates.push_back(estimate);
         progress.converged = until_converged && estimate <= options_.tolerance;
         if (progress.converged || last) {
@@ -294,28 +281,29 @@ class Multigrid {
           break;
         }
       }
-      const Sum rz = sumOverFree([&](int i) { return r[i] * z[i]; });
       const Px beta = k == 0 ? Px{} : ratio(rz, rz_previous);
       rz_previous = rz;
-      // p stays 0 where z is (Dirichlet pixels, ghost border).
-      if (k == 0) {
-        std::copy_n(z, size, p);
+      const Px alpha = ratio(rz, updateDirection(beta, k == 0));
+      Sum update_squares{}, rr{};
+      if (record) {
+        for (int y = 0; y < fine_.height; ++y) {
+          Px row_updates{}, row_residuals{};
+          for (int i = fine_.index(0, y), end = fine_.index(fine_.width, y); i < end; ++i) {
+            const Px step = alpha * p[i];
+            u[i] += step;
+            r[i] -= alpha * ap[i];
+            row_updates += step * step;
+            row_residuals += r[i] * r[i];
+          }
+          accumulate(update_squares, row_updates);
+          accumulate(rr, row_residuals);
+        }
       } else {
-        for (size_t i = 0; i < size; ++i) p[i] = z[i] + beta * p[i];
+        for (size_t i = 0; i < size; ++i) {
+          u[i] += alpha * p[i];
+          r[i] -= alpha * ap[i];
+        }
       }
-      const Sum pap = sumOverFree([&](int i) {
-        ap[i] = -residualAt(fine_, p, nullptr, i);  // A p (p is 0 at Dirichlet pixels)
-        return p[i] * ap[i];
-      });
-      const Px alpha = ratio(rz, pap);
-      Sum update_squares{};
-      const Sum rr = sumOverFree([&](int i) {
-        const Px step = alpha * p[i];
-        u[i] += step;
-        r[i] -= alpha * ap[i];
-        accumulate(update_squares, step * step);
-        return r[i] * r[i];
-      });
       ++progress.iterations;
       if (record) {
         progress.residuals.push_back(rms(rr));
@@ -324,77 +312,106 @@ class Multigrid {
     }
   }
 
-  // z = (I - Q A) B (I - A Q) r + Q r: the V-cycle B balanced by the components' constants.
-  void precondition(const Px* __restrict r, Px* __restrict z) {
-    const size_t size = fine_.size;
-    if (!balance_) {
-      std::fill_n(z, size, Px{});
-      vcycle(0, z, r);
-      return;
+  // p = z + beta p (the first time p = z: p holds garbage) and A p, row by row (A p of a row
+  // needs p of the rows around it, so it trails by one); returns p . A p.
+  Sum updateDirection(const Px& beta, bool first) {
+    const Px* __restrict z = z_.data();
+    Px* __restrict p = p_.data();
+    Px* __restrict ap = ap_.data();
+    Sum total{};
+    const auto product_row = [&](int y) {
+      Px row{};
+      for (int i = fine_.index(0, y), end = fine_.index(fine_.width, y); i < end; ++i) {
+        ap[i] = operatorAt(fine_, p, static_cast<size_t>(i));
+        row += p[i] * ap[i];
+      }
+      accumulate(total, row);
+    };
+    for (int y = 0; y < fine_.height; ++y) {
+      const int begin = fine_.index(0, y), end = fine_.index(fine_.width, y);
+      if (first) {
+        std::copy(z + begin, z + end, p + begin);
+      } else {
+        for (int i = begin; i < end; ++i) p[i] = z[i] + beta * p[i];
+      }
+      if (y > 0) product_row(y - 1);
     }
-    const FreeComponents& fc = components_;
-    const size_t components = static_cast<size_t>(fc.count);
-    Px* __restrict balanced = ap_.data();  // free here: CG recomputes it after
-    pins_.assign(components, 0.0);
-    sums_.assign(components, Sum{});
-    for (const auto& pin : fc.pinned) pins_[fc.component[pin.pixel]] += pin.links;
-    for (size_t i = 0; i < size; ++i) {
-      if (fc.component[i] >= 0) accumulate(sums_[fc.component[i]], r[i]);
-    }
-    constant_.resize(components);
-    for (size_t k = 0; k < components; ++k) constant_[k] = ratio(sums_[k], pins_[k]);
-    std::copy_n(r, size, balanced);
-    for (const auto& pin : fc.pinned) {
-      balanced[pin.pixel] -= pin.links * constant_[fc.component[pin.pixel]];
-    }
-    std::fill_n(z, size, Px{});
-    vcycle(0, z, balanced);
-    sums_.assign(components, Sum{});
-    for (const auto& pin : fc.pinned) {
-      accumulate(sums_[fc.component[pin.pixel]], pin.links * z[pin.pixel]);
-    }
-    for (size_t k = 0; k < components; ++k) constant_[k] -= ratio(sums_[k], pins_[k]);
-    for (size_t i = 0; i < size; ++i) {
-      if (fc.component[i] >= 0) z[i] += constant_[fc.component[i]];
-    }
+    product_row(fine_.height - 1);
+    return total;
   }
 
-  void vcycle(int l, Px* u, const Px* f) {
+  // Sums term(i) over the interior of the finest level (per row in float, then in double).
+  template <class Term>
+  Sum sumRows(Term&& term) const {
+    Sum total{};
+    for (int y = 0; y < fine_.height; ++y) {
+      Px row{};
+      for (int i = fine_.index(0, y), end = fine_.index(fine_.width, y); i < end; ++i) {
+        row += term(static_cast<size_t>(i));
+      }
+      accumulate(total, row);
+    }
+    return total;
+  }
+
+  // One V-cycle on level l for A u = f, from u or, with `from_zero`, from 0 (u is then not read
+  // at the free points; its other points must be 0).
+  void vcycle(int l, Px* u, const Px* f, bool from_zero) {
     const int coarsest = levelCount() - 1;
     if (l == coarsest) {
       solveCoarsest(u, f);
       return;
     }
-    smoothLevel(l, u, f, options_.pre_smoothing, false);
+    const int pre = options_.pre_smoothing, post = options_.post_smoothing;
+    if (from_zero && pre == 0) zeroFree(l, u);
+    if (l == 0) {
+      smoothFine(u, f, pre, false, from_zero);
+    } else {
+      smoothCoarse(coarse_[l - 1], u, f, pre, false, from_zero);
+    }
     restrictResidual(l, u, f, f_[l + 1].data());
-    std::fill(u_[l + 1].begin(), u_[l + 1].end(), Px{});
-    vcycle(l + 1, u_[l + 1].data(), f_[l + 1].data());
+    vcycle(l + 1, u_[l + 1].data(), f_[l + 1].data(), true);
     prolong<true>(l, u_[l + 1].data(), u);
-    smoothLevel(l, u, f, options_.post_smoothing, true);  // the adjoint of the pre-smoothing
+    // The adjoint of the pre-smoothing.
+    if (l == 0) {
+      smoothFine(u, f, post, true, false);
+    } else {
+      smoothCoarse(coarse_[l - 1], u, f, post, true, false);
+    }
   }
 
-  void smoothLevel(int l, Px* u, const Px* f, int sweeps, bool reverse) const {
-    if (l == 0) {
-      smoothFine(u, f, sweeps, reverse);
-    } else {
-      smoothCoarse(coarse_[l - 1], u, f, sweeps, reverse);
+  void zeroFree(int l, Px* u) const {
+    const size_t size = l == 0 ? fine_.size : coarse_[l - 1].size;
+    for (size_t p = 0; p < size; ++p) {
+      if (l > 0 || fine_.isFree(static_cast<int>(p))) u[p] = Px{};
     }
   }
 
   // Red-black Gauss-Seidel on the free pixels of the finest level: u_p = (f_p + sum w u_q) /
   // sum w, red pixels (x + y even) first, or black first if `black_first`. The second
-  // half-sweep trails the first by a row, so one pass over memory does a full sweep.
-  void smoothFine(Px* u, const Px* f, int sweeps, bool black_first) const {
+  // half-sweep trails the first by a row, so one pass over memory does a full sweep. From
+  // zero, the first half-sweep reads no neighbours.
+  void smoothFine(Px* u, const Px* f, int sweeps, bool black_first, bool from_zero) const {
     const int order = black_first ? 1 : 0;
     for (int sweep = 0; sweep < sweeps; ++sweep) {
+      const bool leading_from_zero = from_zero && sweep == 0;
       for (int y = 0; y <= fine_.height; ++y) {
         const int first_x = (y + order) & 1;  // leading row y, trailing row y - 1: other colour
-        if (f) {
-          if (y < fine_.height) relaxRow<true>(u, f, y, first_x);
-          if (y > 0) relaxRow<true>(u, f, y - 1, first_x);
-        } else {
-          if (y < fine_.height) relaxRow<false>(u, f, y, first_x);
-          if (y > 0) relaxRow<false>(u, f, y - 1, first_x);
+        if (y < fine_.height) {
+          if (leading_from_zero) {
+            relaxRowFromZero(u, f, y, first_x);
+          } else if (f) {
+            relaxRow<true>(u, f, y, first_x);
+          } else {
+            relaxRow<false>(u, f, y, first_x);
+          }
+        }
+        if (y > 0) {
+          if (f) {
+            relaxRow<true>(u, f, y - 1, first_x);
+          } else {
+            relaxRow<false>(u, f, y - 1, first_x);
+          }
         }
       }
     }
@@ -420,20 +437,54 @@ class Multigrid {
     }
   }
 
+  // The first half-sweep from u = 0: u_p = f_p / sum w.
+  void relaxRowFromZero(Px* __restrict u, const Px* __restrict f, int y, int first_x) const {
+    const std::uint8_t* __restrict mask = fine_.mask.data();
+    for (int p = fine_.index(first_x, y), end = fine_.index(fine_.width, y); p < end; p += 2) {
+      const std::uint8_t m = mask[p];
+      if (!(m & kFixed)) u[p] = f[p] * kWeights[m].inv_degree;
+    }
+  }
+
   // Lexicographic Gauss-Seidel on a coarse level, forwards or (the adjoint) backwards. Points
-  // that are not unknowns have zero rows and stay 0.
+  // that are not unknowns have zero rows and stay 0. From zero, the first (forward) sweep
+  // reads only the neighbours it has already relaxed.
   static void smoothCoarse(const CoarseLevel& level, Px* __restrict u, const Px* __restrict f,
-                           int sweeps, bool backwards) {
+                           int sweeps, bool backwards, bool from_zero) {
+    const std::uint8_t* __restrict regular = level.regular.data();
+    const float* __restrict inverse = level.inverse_centre.data();
+    const Stencil& stencil = level.regular_stencil;
+    // The regular stencil is symmetric: one coupling for the four edge neighbours, one for the
+    // four corners.
+    const float edge = stencil[kE], corner = stencil[kSE], inverse_regular = 1.0f / stencil[kC];
+    const int s = level.stride;
+    const auto relax = [&](int p) {
+      if (regular[p]) {
+        const Px edges = (u[p - 1] + u[p + 1]) + (u[p - s] + u[p + s]);
+        const Px corners = (u[p - s - 1] + u[p - s + 1]) + (u[p + s - 1] + u[p + s + 1]);
+        u[p] = (f[p] - edge * edges - corner * corners) * inverse_regular;
+      } else {
+        u[p] = (f[p] - offDiagonal(level, u, p)) * inverse[p];
+      }
+    };
     for (int sweep = 0; sweep < sweeps; ++sweep) {
+      if (from_zero && sweep == 0) {
+        for (int y = 0; y < level.height; ++y) {
+          for (int p = level.index(0, y), end = level.index(level.width, y); p < end; ++p) {
+            u[p] = (f[p] - backwardOffDiagonal(level, u, p)) * inverse[p];
+          }
+        }
+        continue;
+      }
       for (int row = 0; row < level.height; ++row) {
         const int y = backwards ? level.height - 1 - row : row;
         if (backwards) {
           for (int p = level.index(level.width - 1, y), end = level.index(0, y); p >= end; --p) {
-            u[p] = (f[p] - offDiagonal(level, u, p)) * level.inverse_centre[p];
+            relax(p);
           }
         } else {
           for (int p = level.index(0, y), end = level.index(level.width, y); p < end; ++p) {
-            u[p] = (f[p] - offDiagonal(level, u, p)) * level.inverse_centre[p];
+            relax(p);
           }
         }
       }
@@ -441,76 +492,99 @@ class Multigrid {
   }
 
   // The off-diagonal part of a coarse row times u.
-  static Px offDiagonal(const CoarseLevel& level, const Px* __restrict u, int p) {
+  __attribute__((always_inline)) static Px offDiagonal(const CoarseLevel& level,
+                                                       const Px* __restrict u, int p) {
     const int s = level.stride;
-    return level.east[p] * u[p + 1] + level.east[p - 1] * u[p - 1] + level.south[p] * u[p + s] +
-           level.south[p - s] * u[p - s] + level.south_east[p] * u[p + s + 1] +
-           level.south_east[p - s - 1] * u[p - s - 1] + level.south_west[p] * u[p + s - 1] +
-           level.south_west[p - s + 1] * u[p - s + 1];
+    return backwardOffDiagonal(level, u, p) + level.east[p] * u[p + 1] + level.south[p] * u[p + s] +
+           level.south_east[p] * u[p + s + 1] + level.south_west[p] * u[p + s - 1];
+  }
+
+  // Its part towards the neighbours before p (west, north-west, north, north-east).
+  __attribute__((always_inline)) static Px backwardOffDiagonal(const CoarseLevel& level,
+                                                               const Px* __restrict u, int p) {
+    const int s = level.stride;
+    return level.east[p - 1] * u[p - 1] + level.south[p - s] * u[p - s] +
+           level.south_east[p - s - 1] * u[p - s - 1] + level.south_west[p - s + 1] * u[p - s + 1];
   }
 
   // The residual f - A u at pixel p of the finest level; without f, u holds the Dirichlet
-  // values (the right-hand side). 0 at Dirichlet pixels and in the ghost border. Summed as
-  // differences of neighbouring values, which are exact in floating point where the values are
-  // close (a sum of four values less 4 u loses ~1e-7 absolute per pixel, which in a region
-  // pinned by a few pixels adds up to errors of 1e-4 in the solution).
-  static Px residualAt(const FineLevel& level, const Px* __restrict u, const Px* __restrict f,
-                       size_t p) {
+  // values (the right-hand side). 0 at Dirichlet pixels and in the ghost border. With the
+  // solution's values in u, summed as differences of neighbouring values, which are exact in
+  // floating point where the values are close: a sum of four values less 4 u loses ~1e-7
+  // absolute per pixel, which in a region pinned by a few pixels adds up to errors of 1e-4 in
+  // the solution. A correction (with f) has small values and takes the cheaper form.
+  __attribute__((always_inline)) static Px residualAt(const FineLevel& level,
+                                                      const Px* __restrict u,
+                                                      const Px* __restrict f, size_t p) {
+    if (f) return f[p] - operatorAt(level, u, p);
     const size_t s = static_cast<size_t>(level.stride);
     const std::uint8_t m = level.mask[p];
-    Px r;
     if (m == kAllLinks) {
       const Px centre = u[p];
-      r = ((u[p - 1] - centre) + (u[p + 1] - centre)) + ((u[p - s] - centre) + (u[p + s] - centre));
-    } else if (m & kFixed) {
-      return Px{};
-    } else {
-      const LinkWeights& w = kWeights[m];
-      r = w.left * (u[p - 1] - u[p]) + w.right * (u[p + 1] - u[p]) + w.up * (u[p - s] - u[p]) +
-          w.down * (u[p + s] - u[p]);
+      return ((u[p - 1] - centre) + (u[p + 1] - centre)) +
+             ((u[p - s] - centre) + (u[p + s] - centre));
     }
-    return f ? r + f[p] : r;
+    if (m & kFixed) return Px{};
+    const LinkWeights& w = kWeights[m];
+    return w.left * (u[p - 1] - u[p]) + w.right * (u[p + 1] - u[p]) + w.up * (u[p - s] - u[p]) +
+           w.down * (u[p + s] - u[p]);
   }
 
-  static Px residualAt(const CoarseLevel& level, const Px* __restrict u, const Px* __restrict f,
-                       size_t p) {
+  // (A v)(p) on the finest level for a field v that is 0 at Dirichlet pixels (a correction or
+  // a search direction: small values, so no care for cancellation).
+  __attribute__((always_inline)) static Px operatorAt(const FineLevel& level,
+                                                      const Px* __restrict v, size_t p) {
+    const size_t s = static_cast<size_t>(level.stride);
+    const std::uint8_t m = level.mask[p];
+    if (m == kAllLinks) return 4.0f * v[p] - ((v[p - 1] + v[p + 1]) + (v[p - s] + v[p + s]));
+    if (m & kFixed) return Px{};
+    const LinkWeights& w = kWeights[m];
+    return (w.left + w.right + w.up + w.down) * v[p] -
+           (w.left * v[p - 1] + w.right * v[p + 1] + w.up * v[p - s] + w.down * v[p + s]);
+  }
+
+  __attribute__((always_inline)) static Px residualAt(const CoarseLevel& level,
+                                                      const Px* __restrict u,
+                                                      const Px* __restrict f, size_t p) {
     const int q = static_cast<int>(p);
     return f[q] - level.centre[q] * u[q] - offDiagonal(level, u, q);
-  }
-
-  // RMS of a residual field of the finest level (0 at Dirichlet pixels).
-  double residualNorm(const Px* r) const {
-    return rms(sumOverFree([&](int i) { return r[i] * r[i]; }));
   }
 
   // Restricts the residual of level l to level l + 1 with P^T: each fine point sends its
   // residual to the coarse points its correction comes from, with the same weights.
   void restrictResidual(int l, const Px* u, const Px* f, Px* fc) const {
     if (l == 0) {
-      restrictFrom(fine_, l, u, f, fc);
+      const FineLevel& fine = fine_;
+      restrictFrom(
+          fine, l, [&](size_t p) { return residualAt(fine, u, f, p); }, fc);
     } else {
-      restrictFrom(coarse_[l - 1], l, u, f, fc);
+      const CoarseLevel& fine = coarse_[l - 1];
+      restrictFrom(
+          fine, l, [&](size_t p) { return residualAt(fine, u, f, p); }, fc);
     }
   }
 
-  template <class Op>
-  void restrictFrom(const Op& fine, int l, const Px* __restrict u, const Px* __restrict f,
-                    Px* __restrict fc) const {
+  // P^T times the fine field residual(p) of level l into fc (level l + 1), cell by cell; a
+  // cell's square sends to its own coarse row and the next, which is cleared just before.
+  template <class Op, class Residual>
+  void restrictFrom(const Op& fine, int l, Residual&& residual, Px* __restrict fc) const {
     const CoarseLevel& coarse = coarse_[l];
     const Transfer& transfer = transfers_[l];
     const int fs = fine.stride, cs = coarse.stride;
-    std::fill_n(fc, coarse.size, Px{});
+    std::fill_n(fc, coarse.index(-1, 1), Px{});  // the ghost row above and row 0
     for (int j = 0; j < coarse.height; ++j) {
+      std::fill_n(fc + coarse.index(-1, j + 1), coarse.width + 2, Px{});
+      // The x-edge and y-edge points (and so the centre) of the last cells can lie outside.
+      const bool y_inside = 2 * j + 1 < fine.height;
       for (int i = 0; i < coarse.width; ++i) {
         const int c = coarse.index(i, j);
         const size_t p = static_cast<size_t>(fine.index(2 * i, 2 * j));
         const CellWeights& w = transfer[c];
-        // The x-edge and y-edge points (and so the centre) of the last cells can lie outside.
-        const bool x_inside = 2 * i + 1 < fine.width, y_inside = 2 * j + 1 < fine.height;
-        const Px r00 = residualAt(fine, u, f, p);
-        const Px r10 = x_inside ? residualAt(fine, u, f, p + 1) : Px{};
-        const Px r01 = y_inside ? residualAt(fine, u, f, p + fs) : Px{};
-        const Px r11 = x_inside && y_inside ? residualAt(fine, u, f, p + fs + 1) : Px{};
+        const bool x_inside = 2 * i + 1 < fine.width;
+        const Px r00 = residual(p);
+        const Px r10 = x_inside ? residual(p + 1) : Px{};
+        const Px r01 = y_inside ? residual(p + fs) : Px{};
+        const Px r11 = x_inside && y_inside ? residual(p + fs + 1) : Px{};
         fc[c] += r00 + w.x_west * r10 + w.y_north * r01 + w.nw * r11;
         fc[c + 1] += w.x_east * r10 + w.ne * r11;
         fc[c + cs] += w.y_south * r01 + w.sw * r11;
@@ -615,11 +689,6 @@ class Multigrid {
   size_t free_count_ = 0;
   std::vector<Field> u_, f_;  // per level: solution (FMG) or correction (V-cycle), rhs
   Field r_, z_, p_, ap_;      // CG: residual, preconditioned residual, direction, A direction
-  bool balance_ = getenv("VICC_BALANCE") != nullptr;
-  FreeComponents components_;
-  std::vector<double> pins_;
-  std::vector<Sum> sums_;
-  std::vector<Px> constant_;
 };
 
 }  // namespace

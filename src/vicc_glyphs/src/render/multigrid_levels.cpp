@@ -169,84 +169,90 @@ void markIrregularRows(const FineLevel& fine, const Stencil&, std::uint8_t* irre
   }
 }
 
-void markIrregularRows(const CoarseLevel& fine, const Stencil& regular, std::uint8_t* irregular) {
-  std::fill_n(irregular, fine.size, 1);
-  for (int y = 0; y < fine.height; ++y) {
-    for (int p = fine.index(0, y), end = fine.index(fine.width, y); p < end; ++p) {
-      irregular[p] = fine.row(p) != regular;
+void markIrregularRows(const CoarseLevel& fine, const Stencil&, std::uint8_t* irregular) {
+  for (size_t p = 0; p < fine.size; ++p) irregular[p] = !fine.regular[p];
+}
+
+// out[i] = OR of in[step * i + offset + k], k = 0 .. kCount - 1, over positions 0 .. size - 1
+// (positions outside count as set).
+template <int kCount>
+void orWindows(const std::uint8_t* __restrict in, int size, int step, int offset,
+               std::uint8_t* __restrict out, int out_count) {
+  for (int i = 0; i < out_count; ++i) {
+    const int first = step * i + offset;
+    if (first >= 0 && first + kCount <= size) {
+      std::uint8_t any = 0;
+      for (int k = 0; k < kCount; ++k) any |= in[first + k];
+      out[i] = any;
+    } else {
+      std::uint8_t any = 1;  // outside
+      for (int k = std::max(first, 0); k < std::min(first + kCount, size); ++k) any |= in[k];
+      out[i] = any;
     }
   }
 }
 
-// OR of `flags` (rows x columns) over windows: output (i, j) covers columns first_x(i) ..
-// first_x(i) + width - 1 and rows likewise; positions outside count as set.
-template <class Window>
+// OR of `flags` (rows x columns) over windows: output (i, j) covers kColumns columns from
+// step * i + offset and kRows rows from step * j + offset (positions outside count as set).
+// Rows first (contiguous ORs of whole rows, which vectorise), then along each row.
+template <int kColumns, int kRows>
 void dilate(const std::uint8_t* flags, int rows, int columns, int out_rows, int out_columns,
-            Window window, std::uint8_t* across, std::uint8_t* out, int out_stride,
-            int out_offset) {
-  for (int y = 0; y < rows; ++y) {
-    const std::uint8_t* row = flags + static_cast<size_t>(y) * columns;
-    for (int i = 0; i < out_columns; ++i) {
-      const auto [first, count] = window(i);
-      std::uint8_t any = first < 0 || first + count > columns;
-      for (int x = std::max(first, 0); x < std::min(first + count, columns); ++x) any |= row[x];
-      across[static_cast<size_t>(y) * out_columns + i] = any;
-    }
-  }
+            int step, int column_offset, int row_offset, std::uint8_t* across, std::uint8_t* out,
+            int out_stride, int out_offset) {
   for (int j = 0; j < out_rows; ++j) {
-    const auto [first, count] = window(j);
-    for (int i = 0; i < out_columns; ++i) {
-      std::uint8_t any = first < 0 || first + count > rows;
-      for (int y = std::max(first, 0); y < std::min(first + count, rows); ++y) {
-        any |= across[static_cast<size_t>(y) * out_columns + i];
-      }
-      out[out_offset + j * out_stride + i] = any;
+    std::uint8_t* __restrict merged = across;
+    const int first = step * j + row_offset;
+    const bool outside = first < 0 || first + kRows > rows;
+    std::fill_n(merged, columns, static_cast<std::uint8_t>(outside));
+    for (int y = std::max(first, 0); y < std::min(first + kRows, rows); ++y) {
+      const std::uint8_t* __restrict row = flags + static_cast<size_t>(y) * columns;
+      for (int x = 0; x < columns; ++x) merged[x] |= row[x];
     }
+    orWindows<kColumns>(merged, columns, step, column_offset, out + out_offset + j * out_stride,
+                        out_columns);
   }
 }
 
-// Marks the coarse cells whose prolongation or Galerkin couplings may differ from the regular
-// ones: cell (i, j)'s weights and the fine rows its couplings use lie in fine x, y in
-// 2i - 1 .. 2i + 2 (the ghost border and beyond count as irregular). Then, in `galerkin`, the
-// points whose Galerkin row needs an irregular cell among i - 2 .. i + 2, j - 2 .. j + 2 (its
-// own column and those of its forward neighbours).
+// Marks the coarse cells whose prolongation may differ from the bilinear one (`cells`: a fine
+// row in x, y in 2i .. 2i + 2 is irregular; the ghost border and beyond count as irregular)
+// and the points whose Galerkin row may differ from the regular one (`galerkin`): an irregular
+// fine row around (2i, 2j) (x, y in 2i - 1 .. 2i + 1), or an irregular cell among those the
+// columns of I and of its forward neighbours come from (i - 2 .. i + 1, j - 1 .. j + 1).
 template <class Op>
 void markIrregular(const Op& fine, const Stencil& regular, const CoarseLevel& coarse,
                    std::vector<std::uint8_t>& scratch, std::uint8_t*& cells,
                    std::uint8_t*& galerkin) {
   const int cw = coarse.width, ch = coarse.height;
   const int fine_rows = fine.height + 2, fine_columns = fine.stride;
-  const size_t across_size = static_cast<size_t>(fine_rows) * cw;
-  scratch.resize(fine.size + across_size + 3 * coarse.size);
+  const size_t across_size = static_cast<size_t>(fine_columns);
+  const size_t grid_size = static_cast<size_t>(cw) * ch;
+  scratch.resize(fine.size + across_size + 3 * grid_size + 2 * coarse.size);
   std::uint8_t* irregular = scratch.data();
   std::uint8_t* across = irregular + fine.size;
   std::uint8_t* cell_flags = across + across_size;  // cw x ch, no border
-  cells = cell_flags + coarse.size;
+  std::uint8_t* around = cell_flags + grid_size;    // ditto
+  std::uint8_t* window = around + grid_size;        // ditto
+  cells = window + grid_size;
   galerkin = cells + coarse.size;
   markIrregularRows(fine, regular, irregular);
-  // Fine column 2i - 1 is layout column 2i.
-  dilate(
-      irregular, fine_rows, fine_columns, ch, cw,
-      [](int i) {
-        return std::pair{2 * i, 4};
-      },
-      across, cell_flags, cw, 0);
+  // Fine column (row) 2i + k is layout column (row) 2i + k + 1.
+  dilate<3, 3>(irregular, fine_rows, fine_columns, ch, cw, 2, 1, 1, across, cell_flags, cw, 0);
+  dilate<3, 3>(irregular, fine_rows, fine_columns, ch, cw, 2, 0, 0, across, around, cw, 0);
+  dilate<4, 3>(cell_flags, ch, cw, ch, cw, 1, -2, -1, across, window, cw, 0);
   std::fill_n(cells, coarse.size, 1);
-  for (int j = 0; j < ch; ++j) {
-    std::copy_n(cell_flags + static_cast<size_t>(j) * cw, cw, cells + coarse.index(0, j));
-  }
   std::fill_n(galerkin, coarse.size, 1);
-  dilate(
-      cell_flags, ch, cw, ch, cw,
-      [](int i) {
-        return std::pair{i - 2, 5};
-      },
-      across, galerkin, coarse.stride, coarse.index(0, 0));
+  for (int j = 0; j < ch; ++j) {
+    const size_t row = static_cast<size_t>(j) * cw;
+    std::copy_n(cell_flags + row, cw, cells + coarse.index(0, j));
+    for (int i = 0; i < cw; ++i) {
+      galerkin[coarse.index(i, j)] = around[row + i] | window[row + i];
+    }
+  }
 }
 
 template <class Op>
-Stencil coarsenLevel(const Op& fine, const Stencil& regular_fine, Transfer& transfer,
-                     CoarseLevel& coarse, std::vector<std::uint8_t>& scratch) {
+void coarsenLevel(const Op& fine, const Stencil& regular_fine, Transfer& transfer,
+                  CoarseLevel& coarse, std::vector<std::uint8_t>& scratch) {
   const int cw = coarse.width, ch = coarse.height;
   // The regular coarse stencil, from the same computation on a regular operator.
   const RegularOperator regular{regular_fine, 0};
@@ -292,27 +298,27 @@ Stencil coarsenLevel(const Op& fine, const Stencil& regular_fine, Transfer& tran
       coarse.south_east[c] = f.south_east;
     }
   }
-  return regular_coarse;
+  // A row is regular when its forward couplings and those of the neighbours before it (its
+  // backward couplings) are; first the forward ones, in the Galerkin flags' place.
+  coarse.regular_stencil = regular_coarse;
+  std::uint8_t* forward = irregular_rows;
+  for (size_t c = 0; c < coarse.size; ++c) {
+    forward[c] =
+        !irregular_rows[c] ||
+        (coarse.centre[c] == regular_coarse[kC] && coarse.east[c] == regular_coarse[kE] &&
+         coarse.south_west[c] == regular_coarse[kSW] && coarse.south[c] == regular_coarse[kS] &&
+         coarse.south_east[c] == regular_coarse[kSE]);
+  }
+  const int s = coarse.stride;
+  for (int j = 0; j < ch; ++j) {
+    for (int c = coarse.index(0, j), end = coarse.index(cw, j); c < end; ++c) {
+      coarse.regular[c] =
+          forward[c] & forward[c - 1] & forward[c - s] & forward[c - s - 1] & forward[c - s + 1];
+    }
+  }
 }
 
 }  // namespace
-
-Stencil FineLevel::row(int p) const {
-  const std::uint8_t m = mask[p];
-  if (m & kFixed) return {};
-  const LinkWeights& w = kWeights[m];
-  const auto coupling = [&](float link, int q) { return mask[q] & kFixed ? 0.0f : -link; };
-  const int s = stride;
-  return {0.0f,
-          coupling(w.up, p - s),
-          0.0f,
-          coupling(w.left, p - 1),
-          w.left + w.right + w.up + w.down,
-          coupling(w.right, p + 1),
-          0.0f,
-          coupling(w.down, p + s),
-          0.0f};
-}
 
 void makeFineLevel(const GridProblem& problem, FineLevel& level) {
   level.width = problem.width;
@@ -337,60 +343,28 @@ void makeFineLevel(const GridProblem& problem, FineLevel& level) {
   }
 }
 
-void labelFreeComponents(const FineLevel& level, FreeComponents& components) {
-  components.component.assign(level.size, -1);
-  components.count = 0;
-  components.pinned.clear();
-  std::vector<int> stack;
-  const int s = level.stride;
-  for (int y = 0; y < level.height; ++y) {
-    for (int x = 0; x < level.width; ++x) {
-      const int start = level.index(x, y);
-      if ((level.mask[start] & kFixed) || components.component[start] >= 0) continue;
-      const int label = components.count++;
-      components.component[start] = label;
-      stack.assign(1, start);
-      while (!stack.empty()) {
-        const int p = stack.back();
-        stack.pop_back();
-        const std::uint8_t m = level.mask[p];
-        int pins = 0;
-        for (const auto& [link, q] :
-             {std::pair{kLeft, p - 1}, {kRight, p + 1}, {kUp, p - s}, {kDown, p + s}}) {
-          if (!(m & link)) continue;
-          if (level.mask[q] & kFixed) {
-            ++pins;
-            continue;
-          }
-          if (components.component[q] >= 0) continue;
-          components.component[q] = label;
-          stack.push_back(q);
-        }
-        if (pins) components.pinned.push_back({p, static_cast<float>(pins)});
-      }
-    }
-  }
-}
-
 void resizeCoarseLevel(int width, int height, CoarseLevel& coarse) {
+  const size_t size = static_cast<size_t>(width + 2) * (height + 2);
+  if (coarse.width == width && coarse.height == height && coarse.size == size) return;
   coarse.width = width;
   coarse.height = height;
   coarse.stride = width + 2;
-  coarse.size = static_cast<size_t>(coarse.stride) * (height + 2);
+  coarse.size = size;
   for (auto* field : {&coarse.centre, &coarse.inverse_centre, &coarse.east, &coarse.south_west,
                       &coarse.south, &coarse.south_east}) {
-    field->assign(coarse.size, 0.0f);
+    field->assign(size, 0.0f);
   }
+  coarse.regular.assign(size, 0);
 }
 
-Stencil coarsen(const FineLevel& fine, const Stencil& regular_fine, Transfer& transfer,
-                CoarseLevel& coarse, std::vector<std::uint8_t>& scratch) {
-  return coarsenLevel(fine, regular_fine, transfer, coarse, scratch);
+void coarsen(const FineLevel& fine, Transfer& transfer, CoarseLevel& coarse,
+             std::vector<std::uint8_t>& scratch) {
+  coarsenLevel(fine, kFineRegularStencil, transfer, coarse, scratch);
 }
 
-Stencil coarsen(const CoarseLevel& fine, const Stencil& regular_fine, Transfer& transfer,
-                CoarseLevel& coarse, std::vector<std::uint8_t>& scratch) {
-  return coarsenLevel(fine, regular_fine, transfer, coarse, scratch);
+void coarsen(const CoarseLevel& fine, Transfer& transfer, CoarseLevel& coarse,
+             std::vector<std::uint8_t>& scratch) {
+  coarsenLevel(fine, fine.regular_stencil, transfer, coarse, scratch);
 }
 
 }  // namespace vicc_glyphs::multigrid_detail

@@ -62,7 +62,22 @@ struct FineLevel {
   int index(int x, int y) const { return (y + 1) * stride + x + 1; }
   bool isFree(int p) const { return !(mask[p] & kFixed); }
   // Degree on the diagonal (links to Dirichlet pixels included), -1 per link to a free pixel.
-  Stencil row(int p) const;
+  Stencil row(int p) const {
+    const std::uint8_t m = mask[p];
+    if (m & kFixed) return {};
+    const LinkWeights& w = kWeights[m & kAllLinks];
+    const auto coupling = [&](float link, int q) { return mask[q] & kFixed ? 0.0f : -link; };
+    const int s = stride;
+    return {0.0f,
+            coupling(w.up, p - s),
+            0.0f,
+            coupling(w.left, p - 1),
+            w.left + w.right + w.up + w.down,
+            coupling(w.right, p + 1),
+            0.0f,
+            coupling(w.down, p + s),
+            0.0f};
+  }
 };
 
 // A coarse level: the Galerkin operator as the diagonal and the couplings to the east,
@@ -76,6 +91,10 @@ struct CoarseLevel {
   int stride = 0;
   size_t size = 0;
   render_detail::PixelVector<float> centre, inverse_centre, east, south_west, south, south_east;
+  // The stencil of the parts away from curves and borders, and per point whether its row is
+  // that one (the smoother's fast path; 0 in the ghost border).
+  Stencil regular_stencil{};
+  render_detail::PixelVector<std::uint8_t> regular;
 
   int index(int x, int y) const { return (y + 1) * stride + x + 1; }
   bool isFree(int p) const { return centre[p] > 0.0f; }
@@ -102,32 +121,19 @@ using Transfer = render_detail::PixelVector<CellWeights>;
 /// Converts `problem` into `level` (reusing its memory).
 void makeFineLevel(const GridProblem& problem, FineLevel& level);
 
-/// The connected components of the free pixels of level 0 (over links) and its pinned pixels.
-struct FreeComponents {
-  std::vector<int> component;  // per pixel (level layout), -1 at Dirichlet pixels and the border
-  int count = 0;
-  // The free pixels linked to Dirichlet pixels and how many such links each has: all that ties
-  // a component's values down (A = graph Laplacian + this diagonal).
-  struct Pinned {
-    int pixel;
-    float links;
-  };
-  std::vector<Pinned> pinned;
-};
-void labelFreeComponents(const FineLevel& level, FreeComponents& components);
-
-/// Sizes `coarse` for a width x height grid and zeroes it.
+/// Sizes `coarse` for a width x height grid; the ghost border is zero (coarsen() writes the
+/// rest).
 void resizeCoarseLevel(int width, int height, CoarseLevel& coarse);
 
 /// Builds the operator-dependent prolongation from `coarse` (sized, operator not yet set) to
-/// `fine`, and then `coarse`'s operator R A P. `regular_fine` is the stencil of `fine` away
-/// from curves and borders; returns that of `coarse`. Where a point's neighbourhood is regular
-/// the result is the regular one, computed once; only the rest is worked out point by point.
-/// `scratch` holds per-point flags between calls.
-Stencil coarsen(const FineLevel& fine, const Stencil& regular_fine, Transfer& transfer,
-                CoarseLevel& coarse, std::vector<std::uint8_t>& scratch);
-Stencil coarsen(const CoarseLevel& fine, const Stencil& regular_fine, Transfer& transfer,
-                CoarseLevel& coarse, std::vector<std::uint8_t>& scratch);
+/// `fine`, and then `coarse`'s operator R A P and its regular stencil and flags. Where a
+/// point's neighbourhood is regular (the 5-point Laplacian on level 0, `fine.regular_stencil`
+/// on a coarse level) the result is the regular one, computed once; only the rest is worked
+/// out point by point. `scratch` holds per-point flags between calls.
+void coarsen(const FineLevel& fine, Transfer& transfer, CoarseLevel& coarse,
+             std::vector<std::uint8_t>& scratch);
+void coarsen(const CoarseLevel& fine, Transfer& transfer, CoarseLevel& coarse,
+             std::vector<std::uint8_t>& scratch);
 
 /// The regular stencil of level 0: the 5-point Laplacian.
 inline constexpr Stencil kFineRegularStencil{0, -1, 0, -1, 4, -1, 0, -1, 0};

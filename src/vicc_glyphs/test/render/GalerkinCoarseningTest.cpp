@@ -120,9 +120,9 @@ void coarsenTwice(const GridProblem& problem, Hierarchy& h) {
   std::vector<std::uint8_t> scratch;
   makeFineLevel(problem, h.fine);
   resizeCoarseLevel((problem.width + 1) / 2, (problem.height + 1) / 2, h.level1);
-  const Stencil regular1 = coarsen(h.fine, kFineRegularStencil, h.transfer0, h.level1, scratch);
+  coarsen(h.fine, h.transfer0, h.level1, scratch);
   resizeCoarseLevel((h.level1.width + 1) / 2, (h.level1.height + 1) / 2, h.level2);
-  coarsen(h.level1, regular1, h.transfer1, h.level2, scratch);
+  coarsen(h.level1, h.transfer1, h.level2, scratch);
 }
 
 TEST(GalerkinCoarseningTest, CoarseOperatorsAreTheDenseProductsRAP) {

@@ -24,8 +24,8 @@
 namespace vicc_glyphs {
 
 struct MultigridOptions {
-  int pre_smoothing = 2;          ///< sweeps before the coarse correction
-  int post_smoothing = 2;         ///< sweeps after it in reverse order (equal counts: symmetric)
+  int pre_smoothing = 1;          ///< sweeps before the coarse correction
+  int post_smoothing = 1;         ///< sweeps after it in reverse order (equal counts: symmetric)
   int intermediate_cycles = 1;    ///< V-cycles on each level between coarsest and finest (FMG)
   int coarsest_size = 16;         ///< coarsen until the larger side is at most this (1..64);
                                   ///< that level is solved directly
@@ -43,7 +43,7 @@ struct MultigridOptions {
   /// compares.
   static constexpr double kDefaultTolerance = 2e-3;
   /// The coarsest level is factorised densely within its band: (size^2) x size doubles.
-  static constexpr int kMaxCoarsestSize = 256;
+  static constexpr int kMaxCoarsestSize = 64;
 };
 
 struct MultigridReport {
