@@ -1,5 +1,9 @@
 #include "vicc_glyphs/render/multigrid.hpp"
 
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -100,7 +104,8 @@ class Multigrid {
       solveCoarsest(u_[coarsest].data(), f_[coarsest].data());
       for (int l = coarsest - 1; l >= 1; --l) {
         prolong<false>(l, u_[l + 1].data(), u_[l].data());
-        for (int k = 0; k < options_.intermediate_cycles; ++k) {
+        const int cycles = l == 1 ? options_.next_to_finest_cycles : options_.intermediate_cycles;
+        for (int k = 0; k < cycles; ++k) {
           vcycle(l, u_[l].data(), f_[l].data(), false);
         }
       }
@@ -151,6 +156,20 @@ class Multigrid {
       value[c] = x;
     } else {
       value = x;
+    }
+  }
+
+  // max(largest, |value|) per channel (largest is not negative).
+  static Px largerMagnitude(const Px& largest, const Px& value) {
+    if constexpr (C == 3) {
+#if defined(__SSE__)
+      return _mm_max_ps(largest, _mm_andnot_ps(_mm_set1_ps(-0.0f), value));  // sign cleared
+#else
+      const Px magnitude = value < 0 ? -value : value;
+      return magnitude > largest ? magnitude : largest;
+#endif
+    } else {
+      return std::max(largest, std::abs(value));
     }
   }
 
@@ -260,20 +279,26 @@ class Multigrid {
     for (size_t i = 0; i < size; ++i) r[i] = residualAt(fine_, u, nullptr, i);
     if (record) progress.residuals.push_back(rms(sumRows([&](size_t i) { return r[i] * r[i]; })));
     Sum rz_previous{};
+    alphas_.clear();
+    betas_.clear();
     for (int k = 0; k <= iterations; ++k) {
       const bool last = k == iterations;
       if (last && !until_converged) break;  // a fixed count needs no estimate of the result
       vcycle(0, z, r, true);
       Px largest{};
       const Sum rz = sumRows([&](size_t i) {
-        const Px magnitude = z[i] < 0 ? -z[i] : z[i];
-        largest = magnitude > largest ? magnitude : largest;
+        largest = largerMagnitude(largest, z[i]);
         return r[i] * z[i];
       });
       if (record) {
-        // z = B r approximates the error of u (exactly if the V-cycle inverted A).
+        // z = B r = (B A) e: the error e itself where B inverts A well, a fraction of it (an
+        // eigenvalue of B A) where not, e.g. for a region that reaches its Dirichlet pixels
+        // through a gap. So the estimate divides by the smallest eigenvalue CG has met.
         double estimate = 0.0;
-        for (int c = 0; c < C; ++c) estimate = std::max(estimate, double(channel(largest, c)));
+        for (int c = 0; c < C; ++c) {
+          const double smallest = std::min(1.0, smallestRitzValue(alphas_, betas_, c));
+          estimate = std::max(estimate, channel(largest, c) / std::max(smallest, kSmallestRitz));
+        }
         progress.error_estimates.push_back(estimate);
         progress.converged = until_converged && estimate <= options_.tolerance;
         if (progress.converged || last) {
@@ -284,6 +309,8 @@ class Multigrid {
       const Px beta = k == 0 ? Px{} : ratio(rz, rz_previous);
       rz_previous = rz;
       const Px alpha = ratio(rz, updateDirection(beta, k == 0));
+      alphas_.push_back(alpha);
+      betas_.push_back(beta);
       Sum update_squares{}, rr{};
       if (record) {
         for (int y = 0; y < fine_.height; ++y) {
@@ -310,6 +337,50 @@ class Multigrid {
         progress.updates.push_back(rms(update_squares));
       }
     }
+  }
+
+  // The smallest eigenvalue of the preconditioned operator B A that CG has met in channel c:
+  // the smallest Ritz value of the Lanczos tridiagonal matrix of its steps (diagonal
+  // 1/alpha_j + beta_j/alpha_j-1, off-diagonal sqrt(beta_j)/alpha_j-1), by bisection on Sturm
+  // sequence counts. 1 before the first step (B A's eigenvalues lie in (0, 1]: a symmetric
+  // V-cycle with Galerkin coarse operators is a convergent iteration).
+  static double smallestRitzValue(const std::vector<Px>& alphas, const std::vector<Px>& betas,
+                                  int c) {
+    std::vector<double> diagonal, off_diagonal;  // off_diagonal[j]: between j and j + 1
+    for (size_t j = 0; j < alphas.size(); ++j) {
+      const double alpha = channel(alphas[j], c);
+      if (!(alpha > 0.0)) break;  // the channel was solved exactly
+      double d = 1.0 / alpha;
+      if (j > 0) {
+        const double beta = std::max(0.0, static_cast<double>(channel(betas[j], c)));
+        const double previous = channel(alphas[j - 1], c);
+        d += beta / previous;
+        off_diagonal.push_back(std::sqrt(beta) / previous);
+      }
+      diagonal.push_back(d);
+    }
+    if (diagonal.empty()) return 1.0;
+    const size_t m = diagonal.size();
+    double upper = 0.0;  // Gershgorin
+    for (size_t j = 0; j < m; ++j) {
+      const double left = j > 0 ? off_diagonal[j - 1] : 0.0;
+      const double right = j + 1 < m ? off_diagonal[j] : 0.0;
+      upper = std::max(upper, diagonal[j] + left + right);
+    }
+    double lower = 0.0;
+    for (int step = 0; step < 50; ++step) {
+      const double middle = 0.5 * (lower + upper);
+      int below = 0;  // eigenvalues below `middle`: negative pivots of T - middle I
+      double pivot = 1.0;
+      for (size_t j = 0; j < m; ++j) {
+        const double coupling = j > 0 ? off_diagonal[j - 1] : 0.0;
+        pivot = diagonal[j] - middle - (j > 0 ? coupling * coupling / pivot : 0.0);
+        if (pivot == 0.0) pivot = -1e-300;
+        if (pivot < 0.0) ++below;
+      }
+      (below > 0 ? upper : lower) = middle;
+    }
+    return upper;
   }
 
   // p = z + beta p (the first time p = z: p holds garbage) and A p, row by row (A p of a row
@@ -369,7 +440,14 @@ class Multigrid {
     } else {
       smoothCoarse(coarse_[l - 1], u, f, pre, false, from_zero);
     }
-    restrictResidual(l, u, f, f_[l + 1].data());
+    if (l == 0 && pre > 0) {
+      // The pre-smoothing ended with the black half-sweep: the black pixels' residual is 0.
+      const FineLevel& fine = fine_;
+      restrictFrom<true>(
+          fine, l, [&](size_t p) { return residualAt(fine, u, f, p); }, f_[1].data());
+    } else {
+      restrictResidual(l, u, f, f_[l + 1].data());
+    }
     vcycle(l + 1, u_[l + 1].data(), f_[l + 1].data(), true);
     prolong<true>(l, u_[l + 1].data(), u);
     // The adjoint of the pre-smoothing.
@@ -565,8 +643,9 @@ class Multigrid {
   }
 
   // P^T times the fine field residual(p) of level l into fc (level l + 1), cell by cell; a
-  // cell's square sends to its own coarse row and the next, which is cleared just before.
-  template <class Op, class Residual>
+  // cell's square sends to its own coarse row and the next, which is cleared just before. With
+  // kBlackZero the residual is known to be 0 at the edge points (x + y odd).
+  template <bool kBlackZero = false, class Op, class Residual>
   void restrictFrom(const Op& fine, int l, Residual&& residual, Px* __restrict fc) const {
     const CoarseLevel& coarse = coarse_[l];
     const Transfer& transfer = transfers_[l];
@@ -582,12 +661,18 @@ class Multigrid {
         const CellWeights& w = transfer[c];
         const bool x_inside = 2 * i + 1 < fine.width;
         const Px r00 = residual(p);
-        const Px r10 = x_inside ? residual(p + 1) : Px{};
-        const Px r01 = y_inside ? residual(p + fs) : Px{};
         const Px r11 = x_inside && y_inside ? residual(p + fs + 1) : Px{};
-        fc[c] += r00 + w.x_west * r10 + w.y_north * r01 + w.nw * r11;
-        fc[c + 1] += w.x_east * r10 + w.ne * r11;
-        fc[c + cs] += w.y_south * r01 + w.sw * r11;
+        if constexpr (kBlackZero) {
+          fc[c] += r00 + w.nw * r11;
+          fc[c + 1] += w.ne * r11;
+          fc[c + cs] += w.sw * r11;
+        } else {
+          const Px r10 = x_inside ? residual(p + 1) : Px{};
+          const Px r01 = y_inside ? residual(p + fs) : Px{};
+          fc[c] += r00 + w.x_west * r10 + w.y_north * r01 + w.nw * r11;
+          fc[c + 1] += w.x_east * r10 + w.ne * r11;
+          fc[c + cs] += w.y_south * r01 + w.sw * r11;
+        }
         fc[c + cs + 1] += w.se * r11;
       }
     }
@@ -687,8 +772,11 @@ class Multigrid {
   BandedCholesky coarsest_;
   std::vector<double> coarsest_values_;
   size_t free_count_ = 0;
-  std::vector<Field> u_, f_;  // per level: solution (FMG) or correction (V-cycle), rhs
-  Field r_, z_, p_, ap_;      // CG: residual, preconditioned residual, direction, A direction
+  std::vector<Field> u_, f_;        // per level: solution (FMG) or correction (V-cycle), rhs
+  Field r_, z_, p_, ap_;            // CG: residual, preconditioned residual, direction, A direction
+  std::vector<Px> alphas_, betas_;  // CG's step coefficients (its Lanczos matrix)
+  // Floor of the eigenvalue the error estimate divides by (float round-off in long runs).
+  static constexpr double kSmallestRitz = 1e-3;
 };
 
 }  // namespace
@@ -745,7 +833,8 @@ void validate(const GridProblem& problem, const MultigridOptions& options) {
                                 std::to_string(options.coarsest_size));
   }
   if (options.pre_smoothing < 0 || options.post_smoothing < 0 || options.intermediate_cycles < 0 ||
-      options.max_fine_cycles < 0 || options.fine_cycles < 0 || !(options.tolerance >= 0.0)) {
+      options.next_to_finest_cycles < 0 || options.max_fine_cycles < 0 || options.fine_cycles < 0 ||
+      !(options.tolerance >= 0.0)) {
     throw std::invalid_argument("solveMultigrid: negative counts or tolerance");
   }
 }

@@ -41,6 +41,7 @@ TEST_P(MultigridVersusDirectTest, InterpolatedCoarseSolutionAloneIsFarOff) {
   // FMG without a single smoothing sweep: shows the comparison can fail.
   MultigridOptions options;
   options.intermediate_cycles = 0;
+  options.next_to_finest_cycles = 0;
   options.fine_cycles = 0;
   options.tolerance = 0.0;
   EXPECT_GT(compareWithDirect(GetParam().second, options).mae, 0.005) << GetParam().first;
