@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
-#include <string>
 
 namespace vicc_glyphs::multigrid_detail {
 
@@ -14,6 +12,8 @@ void BandedCholesky::reset(int n, int bandwidth) {
 }
 
 void BandedCholesky::factorise() {
+  original_diagonal_.resize(n_);
+  for (int i = 0; i < n_; ++i) original_diagonal_[i] = factorEntry(i, i);
   for (int i = 0; i < n_; ++i) {
     const int first = std::max(0, i - bandwidth_);
     for (int j = first; j <= i; ++j) {
@@ -23,11 +23,13 @@ void BandedCholesky::factorise() {
       }
       if (j < i) {
         lower(i, j) = sum / factorEntry(j, j);
-      } else if (sum > 0.0) {
-        lower(i, i) = std::sqrt(sum);
       } else {
-        throw std::runtime_error("BandedCholesky: matrix not positive definite at row " +
-                                 std::to_string(i));
+        // The coarse operators are positive definite by construction; float round-off in a
+        // nearly singular one (a region pinned by a single pixel) can still leave a pivot at
+        // or below 0. A small positive pivot keeps the coarse solve symmetric positive
+        // definite (the preconditioner stays valid; CG corrects the approximation).
+        const double diagonal = std::abs(original_diagonal_[i]);
+        lower(i, i) = std::sqrt(std::max(sum, kPivotFloor * (diagonal > 0.0 ? diagonal : 1.0)));
       }
     }
   }

@@ -16,9 +16,11 @@ class BandedCholesky {
   double& lower(int row, int column) {
     return factor_[static_cast<std::size_t>(row) * (bandwidth_ + 1) + (column - row + bandwidth_)];
   }
-  /// Factorises the lower band in place. Throws std::runtime_error when the matrix is not
-  /// positive definite.
+  /// Factorises the lower band in place. A pivot that round-off leaves at or below
+  /// kPivotFloor times its diagonal entry is raised to that (the factor then belongs to a
+  /// slightly shifted, still positive definite matrix).
   void factorise();
+  static constexpr double kPivotFloor = 1e-12;
   /// Solves A x = b in place (x holds b on entry), n values.
   void solve(double* x) const;
   int size() const { return n_; }
@@ -31,6 +33,7 @@ class BandedCholesky {
   int n_ = 0;
   int bandwidth_ = 0;
   std::vector<double> factor_;
+  std::vector<double> original_diagonal_;
 };
 
 }  // namespace vicc_glyphs::multigrid_detail
