@@ -1,8 +1,10 @@
 // Convergence history of the diffusion solve: for each input, per CG iteration on the finest
-// grid, the rms residual, the error estimate the stopping criterion uses (rms of the
-// V-cycle's correction) and the true error against Eigen's direct solve of the same discrete
-// problem (mean absolute and maximum). Shows whether the default tolerance stops where the
-// error is small enough. Prints a Markdown table per input.
+// grid, the rms residual, the error estimate the stopping criterion uses (largest magnitude of
+// the V-cycle's correction over the smallest eigenvalue CG has met, see rendering.md) and the
+// true error against Eigen's direct solve of the same discrete problem (mean absolute and
+// maximum). Shows whether the default tolerance stops where the error is small enough. Prints a
+// Markdown table per input; its heading gives the default solve's iterations, last estimate
+// and the true errors of its result (which also has the last estimate's correction added).
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -30,9 +32,9 @@ double maxAbsoluteError(const std::vector<float>& a, const std::vector<float>& b
 void printHistory(const std::string& path, int size, int iterations) {
   const DiffusionCurveImage image = loadDiffusionCurves(path, size);
   const MultigridOptions defaults;
-  const std::vector<GridProblem> levels =
-      assembleColorLevels(image, Color::Zero(), defaults.coarsest_size);
-  const std::vector<float> direct = solveDirect(levels.front());
+  const GridProblem problem =
+      assembleColorProblem(image, image.width, image.height, 1.0, Color::Zero());
+  const std::vector<float> direct = solveDirect(problem);
   MultigridSolver solver;
   MultigridReport full;
   {
@@ -41,22 +43,24 @@ void printHistory(const std::string& path, int size, int iterations) {
     options.fine_cycles = iterations;
     options.record_residuals = true;
     std::vector<float> values;
-    solver.solve(levels, options, values, &full);
+    solver.solve(problem, options, values, &full);
   }
   MultigridReport stopped;
   std::vector<float> values;
-  solver.solve(levels, defaults, values, &stopped);
+  solver.solve(problem, defaults, values, &stopped);
   std::cout << "\n### " << path.substr(path.find_last_of('/') + 1) << " at " << size
             << " px (default tolerance " << defaults.tolerance << " stops after "
-            << stopped.fine_cycles << " iterations, MAE " << meanAbsoluteError(values, direct)
-            << ")\n\n"
+            << stopped.fine_cycles << " iterations at estimate " << std::scientific
+            << std::setprecision(2) << stopped.error_estimates.back() << ": MAE "
+            << meanAbsoluteError(values, direct) << ", max error "
+            << maxAbsoluteError(values, direct) << ")\n\n"
             << "| iteration | rms residual | error estimate | rms update | MAE vs direct | max "
                "error |\n|---:|---:|---:|---:|---:|---:|\n";
   for (int k = 0; k <= iterations; ++k) {
     MultigridOptions options;
     options.tolerance = 0.0;
     options.fine_cycles = k;
-    solver.solve(levels, options, values, nullptr);
+    solver.solve(problem, options, values, nullptr);
     std::cout << "| " << k << " | " << std::scientific << std::setprecision(2) << full.residuals[k]
               << " | "
               << (k < static_cast<int>(full.error_estimates.size()) ? full.error_estimates[k] : NAN)

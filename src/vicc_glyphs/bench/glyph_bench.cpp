@@ -50,13 +50,14 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
-Measurement measure(const std::string& path, int size, int repeats) {
+Measurement measure(const std::string& path, int size, int repeats, double tolerance) {
   const DiffusionCurveImage image = loadDiffusionCurves(path, size);
   Measurement m;
   m.curves = static_cast<int>(image.curves.size());
   DiffusionCurveRenderer renderer;
   RenderResult result;
-  const RenderOptions options;
+  RenderOptions options;
+  if (tolerance >= 0.0) options.multigrid.tolerance = tolerance;
   std::vector<double> totals, cpu, solves;
   for (int k = 0; k < repeats + 1; ++k) {
     const double cpu_start = threadCpuMilliseconds();
@@ -77,13 +78,13 @@ Measurement measure(const std::string& path, int size, int repeats) {
   m.converged = result.report.multigrid.converged;
 
   // Accuracy and residual from separate runs, so they do not disturb the timing.
-  const std::vector<GridProblem> levels =
-      assembleColorLevels(image, options.background, options.multigrid.coarsest_size);
+  const GridProblem problem =
+      assembleColorProblem(image, image.width, image.height, 1.0, options.background);
   MultigridOptions recorded = options.multigrid;
   recorded.record_residuals = true;
   MultigridReport report;
-  const std::vector<float> multigrid = solveMultigrid(levels, recorded, &report);
-  const std::vector<float> direct = solveDirect(levels.front());
+  const std::vector<float> multigrid = solveMultigrid(problem, recorded, &report);
+  const std::vector<float> direct = solveDirect(problem);
   m.mae = meanAbsoluteError(multigrid, direct);
   for (size_t i = 0; i < direct.size(); ++i) {
     m.max_error = std::max(m.max_error, std::abs(double(multigrid[i]) - direct[i]));
@@ -96,17 +97,20 @@ Measurement measure(const std::string& path, int size, int repeats) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::cerr << "usage: vicc_glyph_bench [--size N] [--repeats N] INPUT...\n";
+    std::cerr << "usage: vicc_glyph_bench [--size N] [--repeats N] [--tolerance E] INPUT...\n";
     return 2;
   }
   cv::setNumThreads(1);  // one core: no OpenCV worker threads
   Eigen::setNbThreads(1);
   int size = 512, repeats = 21;
+  double tolerance = -1.0;  // < 0: the renderer's default stopping criterion
   std::vector<std::string> inputs;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if ((arg == "--size" || arg == "--repeats") && i + 1 < argc) {
       (arg == "--size" ? size : repeats) = std::max(1, std::atoi(argv[++i]));
+    } else if (arg == "--tolerance" && i + 1 < argc) {
+      tolerance = std::max(0.0, std::atof(argv[++i]));
     } else {
       inputs.push_back(arg);
     }
@@ -119,7 +123,7 @@ int main(int argc, char** argv) {
   for (const std::string& input : inputs) {
     const std::string name = input.substr(input.find_last_of('/') + 1);
     try {
-      const Measurement m = measure(input, size, repeats);
+      const Measurement m = measure(input, size, repeats, tolerance);
       std::cout << std::fixed << "| " << name << " | " << m.curves << " | " << size << " | "
                 << std::setprecision(2) << m.one_shot_ms << " | " << m.median_ms << " | "
                 << m.median_cpu_ms << " | " << m.median_solve_ms << " | " << m.levels << " | "

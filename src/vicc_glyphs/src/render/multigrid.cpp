@@ -1,14 +1,20 @@
 #include "vicc_glyphs/render/multigrid.hpp"
 
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <utility>
 
+#include "banded_cholesky.hpp"
 #include "multigrid_levels.hpp"
 #include "vicc_glyphs/render/pixel_buffer.hpp"
 
@@ -39,53 +45,76 @@ class Multigrid {
   using Sum = std::array<double, C>;
 
  public:
-  // Sets up the levels for `problems`, reusing the memory of the previous solve.
-  void prepare(const std::vector<GridProblem>& problems, const MultigridOptions& options) {
-    problems_ = &problems;
+  // Builds the hierarchy for `problem`, reusing the memory of the previous solve.
+  void prepare(const GridProblem& problem, const MultigridOptions& options) {
+    problem_ = &problem;
     options_ = options;
-    const size_t count = problems.size();
-    levels_.resize(count);
-    free_counts_.resize(count);
+    makeFineLevel(problem, fine_);
+    free_count_ = static_cast<size_t>(std::count_if(problem.fixed.begin(), problem.fixed.end(),
+                                                    [](std::uint8_t f) { return !f; }));
+    const std::vector<std::pair<int, int>> sizes =
+        levelSizes(problem.width, problem.height, options.coarsest_size);
+    const size_t count = sizes.size();
+    coarse_.resize(count - 1);
+    transfers_.resize(count - 1);
     u_.resize(count);
     f_.resize(count);
-    // Fields are not zero-filled (fresh memory would be touched twice): every interior value
-    // is written before it is read, and only the ghost borders need zeros.
-    for (size_t l = 0; l < count; ++l) {
-      makeLevel(problems[l], levels_[l]);
-      free_counts_[l] =
-          static_cast<size_t>(std::count_if(problems[l].fixed.begin(), problems[l].fixed.end(),
-                                            [](std::uint8_t fixed) { return !fixed; }));
-      allocateField(levels_[l], u_[l]);
-      if (l + 1 < count) labelFreeComponents(levels_[l]);  // the levels the CG runs on
-      if (l > 0) allocateField(levels_[l], f_[l]);  // the finest level has no right-hand side
+    for (size_t l = 1; l < count; ++l) {
+      CoarseLevel& coarse = coarse_[l - 1];
+      resizeCoarseLevel(sizes[l].first, sizes[l].second, coarse);
+      if (l == 1) {
+        coarsen(fine_, transfers_[0], coarse, flags_);
+      } else {
+        coarsen(coarse_[l - 2], transfers_[l - 1], coarse, flags_);
+      }
+      allocateField(coarse.size, coarse.stride, coarse.height, u_[l]);
+      allocateField(coarse.size, coarse.stride, coarse.height, f_[l]);
     }
-    if (count > 1) {  // sized for the finest level, used on every level the CG runs on
-      for (Field* field : {&r_, &z_, &p_, &ap_, &balanced_}) allocateField(levels_[0], *field);
+    allocateField(fine_.size, fine_.stride, fine_.height, u_[0]);
+    for (Field* field : {&r_, &p_, &ap_}) {
+      allocateField(fine_.size, fine_.stride, fine_.height, *field);
     }
-    for (size_t l = 0; l + 1 < levels_.size(); ++l) {
-      Level& fine = levels_[l];
-      const Level& coarse = levels_[l + 1];
-      prolongationTable(fine.width, coarse.width, fine.coarse_x, fine.coarse_x_neighbour);
-      prolongationTable(fine.height, coarse.height, fine.coarse_y, fine.coarse_y_neighbour);
-      prolongationSources(fine, coarse);
+    // The V-cycles write z only at free pixels (starting from zero without reading it there):
+    // its Dirichlet pixels must read 0.
+    z_.resize(fine_.size);
+    std::fill(z_.begin(), z_.end(), Px{});
+    if (count == 1) {
+      factoriseCoarsest(fine_);
+    } else {
+      factoriseCoarsest(coarse_.back());
     }
   }
 
-  // FMG: the coarsest problem is smoothed to convergence; on every finer level the coarser
-  // solution, interpolated, starts a conjugate-gradient solve preconditioned by one V-cycle.
+  // FMG, then preconditioned conjugate gradients on the finest level.
   void solve(float* values, MultigridReport* report) {
-    const int coarsest = static_cast<int>(levels_.size()) - 1;
-    FineProgress progress;
-    setDirichletValues(coarsest);
-    smoothSymmetric(coarsest, u_[coarsest].data(), nullptr, options_.coarsest_sweeps);
-    for (int l = coarsest - 1; l >= 0; --l) {
-      setDirichletValues(l);
-      prolong<false>(l, u_[l + 1].data(), u_[l].data());
-      conjugateGradients(l, progress);
+    const int coarsest = levelCount() - 1;
+    setDirichletValues();
+    if (coarsest > 0) {
+      // The start is q + P u_1: q interpolates the Dirichlet values into the free pixels next
+      // to them (what P cannot: its corrections fall to 0 towards a Dirichlet pixel), u_1 is
+      // FMG's solution of the coarse problem for the rest, whose right-hand side is the residual
+      // of q restricted, and so on down the levels.
+      addDirichletExtension();
+      restrictResidual(0, u_[0].data(), nullptr, f_[1].data());
+      for (int l = 1; l < coarsest; ++l) {
+        const Px* f = f_[l].data();
+        restrictFrom(
+            coarse_[l - 1], l, [f](size_t p) { return f[p]; }, f_[l + 1].data());
+      }
+      solveCoarsest(u_[coarsest].data(), f_[coarsest].data());
+      for (int l = coarsest - 1; l >= 1; --l) {
+        prolong<false>(l, u_[l + 1].data(), u_[l].data());
+        const int cycles = l == 1 ? options_.next_to_finest_cycles : options_.intermediate_cycles;
+        for (int k = 0; k < cycles; ++k) {
+          vcycle(l, u_[l].data(), f_[l].data(), false);
+        }
+      }
+      prolong<true>(0, u_[1].data(), u_[0].data());
     }
-    if (coarsest == 0 && options_.record_residuals) progress.residuals.push_back(residualNorm(0));
+    FineProgress progress;
+    conjugateGradients(progress);
     if (report) {
-      report->levels = static_cast<int>(levels_.size());
+      report->levels = levelCount();
       report->fine_cycles = progress.iterations;
       report->converged = progress.converged;
       report->residuals = std::move(progress.residuals);
@@ -96,14 +125,16 @@ class Multigrid {
   }
 
  private:
-  // Sizes `field` for `level` (keeping its storage) and zeroes its ghost border, which the
-  // smoother and the residual read with weight 0 (garbage there could be NaN).
-  static void allocateField(const Level& level, Field& field) {
-    if (field.size() != level.size) {
+  int levelCount() const { return static_cast<int>(coarse_.size()) + 1; }
+
+  // Sizes `field` (keeping its storage) and zeroes its ghost border, which the smoothers and
+  // residuals read with weight 0 (garbage there could be NaN).
+  static void allocateField(size_t size, int stride, int height, Field& field) {
+    if (field.size() != size) {
       field.clear();  // nothing to copy over when the storage grows
-      field.resize(level.size);
+      field.resize(size);
     }
-    const int s = level.stride, rows = level.height + 2;
+    const int s = stride, rows = height + 2;
     std::fill_n(field.begin(), s, Px{});
     std::fill_n(field.begin() + static_cast<long>(rows - 1) * s, s, Px{});
     for (int y = 1; y + 1 < rows; ++y) {
@@ -128,6 +159,20 @@ class Multigrid {
     }
   }
 
+  // max(largest, |value|) per channel (largest is not negative).
+  static Px largerMagnitude(const Px& largest, const Px& value) {
+    if constexpr (C == 3) {
+#if defined(__SSE__)
+      return _mm_max_ps(largest, _mm_andnot_ps(_mm_set1_ps(-0.0f), value));  // sign cleared
+#else
+      const Px magnitude = value < 0 ? -value : value;
+      return magnitude > largest ? magnitude : largest;
+#endif
+    } else {
+      return std::max(largest, std::abs(value));
+    }
+  }
+
   static void accumulate(Sum& sum, const Px& value) {
     for (int c = 0; c < C; ++c) sum[c] += channel(value, c);
   }
@@ -140,218 +185,322 @@ class Multigrid {
     }
     return out;
   }
+
   static Px ratio(const Sum& num, double den) {
     Sum all;
     all.fill(den);
     return ratio(num, all);
   }
 
-  // Root mean square over the free pixels and channels of level l, from a per-channel sum of
-  // squares.
-  double rms(int l, const Sum& squares) const {
+  // Root mean square over the finest level's free pixels and channels, from a per-channel sum
+  // of squares.
+  double rms(const Sum& squares) const {
     double total = 0.0;
     for (int c = 0; c < C; ++c) total += squares[c];
-    const size_t free = free_counts_[l];
-    return free ? std::sqrt(total / (static_cast<double>(free) * C)) : 0.0;
+    return free_count_ ? std::sqrt(total / (static_cast<double>(free_count_) * C)) : 0.0;
   }
 
-  // Sums term(p) over the free pixels of level l (per row in float, then in double).
-  template <class Term>
-  Sum sumOverFree(int l, Term&& term) const {
-    const Level& level = levels_[l];
+  // The finest level's start: Dirichlet values, 0 at the free pixels (replaced by FMG's
+  // interpolation when there are coarser levels).
+  void setDirichletValues() {
+    const GridProblem& problem = *problem_;
+    for (int y = 0; y < fine_.height; ++y) {
+      for (int x = 0; x < fine_.width; ++x) {
+        const int q = y * fine_.width + x;
+        Px& value = u_[0][fine_.index(x, y)];
+        value = Px{};
+        if (problem.fixed[q]) {
+          for (int c = 0; c < C; ++c) setChannel(value, c, problem.values[q * C + c]);
+        }
+      }
+    }
+  }
+
+  // Writes q (see solve) into the free pixels of u_[0], which are 0: P's interpolation rules
+  // applied to the Dirichlet values alone. The x- and y-edge points of a cell first, from the
+  // coarse-type and Dirichlet neighbours (a free neighbour across the collapsed direction
+  // counts as the point itself, as in P), then its centre from the edge points around it. Where
+  // the cell's weights are bilinear no Dirichlet pixel is linked: q is 0 there.
+  void addDirichletExtension() {
+    const CoarseLevel& coarse = coarse_[0];
+    const Transfer& transfer = transfers_[0];
+    Px* __restrict u = u_[0].data();
+    const std::uint8_t* mask = fine_.mask.data();
+    const int s = fine_.stride;
+    const auto isBilinear = [](const CellWeights& w) {
+      return w.x_west == 0.5f && w.x_east == 0.5f && w.y_north == 0.5f && w.y_south == 0.5f &&
+             w.nw == 0.25f && w.ne == 0.25f && w.sw == 0.25f && w.se == 0.25f;
+    };
+    // Linked neighbours' values over the pixel's degree less its links to free pixels along
+    // `collapsed` (kUp | kDown for an x-edge point, kLeft | kRight for a y-edge one, 0 for a
+    // centre point).
+    const auto extend = [&](int p, std::uint8_t collapsed) {
+      const std::uint8_t m = mask[p];
+      if (m & kFixed) return;
+      Px sum{};
+      float denominator = 0.0f;
+      for (const auto& [link, q] :
+           {std::pair{kLeft, p - 1}, {kRight, p + 1}, {kUp, p - s}, {kDown, p + s}}) {
+        if (!(m & link)) continue;
+        sum += u[q];
+        if (!(link & collapsed) || (mask[q] & kFixed)) denominator += 1.0f;
+      }
+      if (denominator > 0.0f) u[p] = sum / denominator;
+    };
+    for (int pass = 0; pass < 2; ++pass) {
+      for (int j = 0; j < coarse.height; ++j) {
+        for (int i = 0; i < coarse.width; ++i) {
+          if (isBilinear(transfer[coarse.index(i, j)])) continue;
+          const int corner = fine_.index(2 * i, 2 * j);
+          if (pass == 0) {
+            if (2 * i + 1 < fine_.width) extend(corner + 1, kUp | kDown);
+            if (2 * j + 1 < fine_.height) extend(corner + s, kLeft | kRight);
+          } else if (2 * i + 1 < fine_.width && 2 * j + 1 < fine_.height) {
+            extend(corner + s + 1, 0);
+          }
+        }
+      }
+    }
+  }
+
+  // Preconditioned conjugate gradients on the finest level from u_[0]; the preconditioner is
+  // one V-cycle from zero on the residual. r, z, p and A p are 0 at Dirichlet pixels and in the
+  // ghost border, so the passes need no mask.
+  void conjugateGradients(FineProgress& progress) {
+    const bool until_converged = options_.tolerance > 0.0;
+    const bool record = options_.record_residuals || until_converged;
+    const int iterations = until_converged ? options_.max_fine_cycles : options_.fine_cycles;
+    const size_t size = fine_.size;
+    Px* __restrict u = u_[0].data();
+    Px* __restrict r = r_.data();
+    Px* __restrict z = z_.data();
+    Px* __restrict p = p_.data();
+    Px* __restrict ap = ap_.data();
+    for (size_t i = 0; i < size; ++i) r[i] = residualAt(fine_, u, nullptr, i);
+    if (record) progress.residuals.push_back(rms(sumRows([&](size_t i) { return r[i] * r[i]; })));
+    Sum rz_previous{};
+    alphas_.clear();
+    betas_.clear();
+    for (int k = 0; k <= iterations; ++k) {
+      const bool last = k == iterations;
+      if (last && !until_converged) break;  // a fixed count needs no estimate of the result
+      vcycle(0, z, r, true);
+      Px largest{};
+      const Sum rz = sumRows([&](size_t i) {
+        largest = largerMagnitude(largest, z[i]);
+        return r[i] * z[i];
+      });
+      if (record) {
+        // z = B r = (B A) e: the error e itself where B inverts A well, a fraction of it (an
+        // eigenvalue of B A) where not, e.g. for a region that reaches its Dirichlet pixels
+        // through a gap. So the estimate divides by the smallest eigenvalue CG has met.
+        double estimate = 0.0;
+        for (int c = 0; c < C; ++c) {
+          const double smallest = std::min(1.0, smallestRitzValue(alphas_, betas_, c));
+          estimate = std::max(estimate, channel(largest, c) / std::max(smallest, kSmallestRitz));
+        }
+        progress.error_estimates.push_back(estimate);
+        progress.converged = until_converged && estimate <= options_.tolerance;
+        if (progress.converged || last) {
+          for (size_t i = 0; i < size; ++i) u[i] += z[i];  // the estimate's correction, for free
+          break;
+        }
+      }
+      const Px beta = k == 0 ? Px{} : ratio(rz, rz_previous);
+      rz_previous = rz;
+      const Px alpha = ratio(rz, updateDirection(beta, k == 0));
+      alphas_.push_back(alpha);
+      betas_.push_back(beta);
+      Sum update_squares{}, rr{};
+      if (record) {
+        for (int y = 0; y < fine_.height; ++y) {
+          Px row_updates{}, row_residuals{};
+          for (int i = fine_.index(0, y), end = fine_.index(fine_.width, y); i < end; ++i) {
+            const Px step = alpha * p[i];
+            u[i] += step;
+            r[i] -= alpha * ap[i];
+            row_updates += step * step;
+            row_residuals += r[i] * r[i];
+          }
+          accumulate(update_squares, row_updates);
+          accumulate(rr, row_residuals);
+        }
+      } else {
+        for (size_t i = 0; i < size; ++i) {
+          u[i] += alpha * p[i];
+          r[i] -= alpha * ap[i];
+        }
+      }
+      ++progress.iterations;
+      if (record) {
+        progress.residuals.push_back(rms(rr));
+        progress.updates.push_back(rms(update_squares));
+      }
+    }
+  }
+
+  // The smallest eigenvalue of the preconditioned operator B A that CG has met in channel c:
+  // the smallest Ritz value of the Lanczos tridiagonal matrix of its steps (diagonal
+  // 1/alpha_j + beta_j/alpha_j-1, off-diagonal sqrt(beta_j)/alpha_j-1), by bisection on Sturm
+  // sequence counts. 1 before the first step (B A's eigenvalues lie in (0, 1]: a symmetric
+  // V-cycle with Galerkin coarse operators is a convergent iteration).
+  static double smallestRitzValue(const std::vector<Px>& alphas, const std::vector<Px>& betas,
+                                  int c) {
+    std::vector<double> diagonal, off_diagonal;  // off_diagonal[j]: between j and j + 1
+    for (size_t j = 0; j < alphas.size(); ++j) {
+      const double alpha = channel(alphas[j], c);
+      if (!(alpha > 0.0)) break;  // the channel was solved exactly
+      double d = 1.0 / alpha;
+      if (j > 0) {
+        const double beta = std::max(0.0, static_cast<double>(channel(betas[j], c)));
+        const double previous = channel(alphas[j - 1], c);
+        d += beta / previous;
+        off_diagonal.push_back(std::sqrt(beta) / previous);
+      }
+      diagonal.push_back(d);
+    }
+    if (diagonal.empty()) return 1.0;
+    const size_t m = diagonal.size();
+    double upper = 0.0;  // Gershgorin
+    for (size_t j = 0; j < m; ++j) {
+      const double left = j > 0 ? off_diagonal[j - 1] : 0.0;
+      const double right = j + 1 < m ? off_diagonal[j] : 0.0;
+      upper = std::max(upper, diagonal[j] + left + right);
+    }
+    double lower = 0.0;
+    for (int step = 0; step < 50; ++step) {
+      const double middle = 0.5 * (lower + upper);
+      int below = 0;  // eigenvalues below `middle`: negative pivots of T - middle I
+      double pivot = 1.0;
+      for (size_t j = 0; j < m; ++j) {
+        const double coupling = j > 0 ? off_diagonal[j - 1] : 0.0;
+        pivot = diagonal[j] - middle - (j > 0 ? coupling * coupling / pivot : 0.0);
+        if (pivot == 0.0) pivot = -1e-300;
+        if (pivot < 0.0) ++below;
+      }
+      (below > 0 ? upper : lower) = middle;
+    }
+    return upper;
+  }
+
+  // p = z + beta p (the first time p = z: p holds garbage) and A p, row by row (A p of a row
+  // needs p of the rows around it, so it trails by one); returns p . A p.
+  Sum updateDirection(const Px& beta, bool first) {
+    const Px* __restrict z = z_.data();
+    Px* __restrict p = p_.data();
+    Px* __restrict ap = ap_.data();
     Sum total{};
-    for (int y = 0; y < level.height; ++y) {
+    const auto product_row = [&](int y) {
       Px row{};
-      for (int p = level.index(0, y), end = level.index(level.width, y); p < end; ++p) {
-        if (!(level.mask[p] & kFixed)) row += term(p);
+      for (int i = fine_.index(0, y), end = fine_.index(fine_.width, y); i < end; ++i) {
+        ap[i] = operatorAt(fine_, p, static_cast<size_t>(i));
+        row += p[i] * ap[i];
+      }
+      accumulate(total, row);
+    };
+    for (int y = 0; y < fine_.height; ++y) {
+      const int begin = fine_.index(0, y), end = fine_.index(fine_.width, y);
+      if (first) {
+        std::copy(z + begin, z + end, p + begin);
+      } else {
+        for (int i = begin; i < end; ++i) p[i] = z[i] + beta * p[i];
+      }
+      if (y > 0) product_row(y - 1);
+    }
+    product_row(fine_.height - 1);
+    return total;
+  }
+
+  // Sums term(i) over the interior of the finest level (per row in float, then in double).
+  template <class Term>
+  Sum sumRows(Term&& term) const {
+    Sum total{};
+    for (int y = 0; y < fine_.height; ++y) {
+      Px row{};
+      for (int i = fine_.index(0, y), end = fine_.index(fine_.width, y); i < end; ++i) {
+        row += term(static_cast<size_t>(i));
       }
       accumulate(total, row);
     }
     return total;
   }
 
-  // The largest magnitude over the free pixels and channels of a field of level l.
-  double maxOverFree(int l, const Px* __restrict v) const {
-    const Level& level = levels_[l];
-    Px largest{};
-    for (size_t i = 0; i < level.size; ++i) {
-      const Px magnitude = v[i] < 0 ? -v[i] : v[i];  // 0 at Dirichlet pixels and the border
-      largest = magnitude > largest ? magnitude : largest;
-    }
-    double result = 0.0;
-    for (int c = 0; c < C; ++c) result = std::max(result, static_cast<double>(channel(largest, c)));
-    return result;
-  }
-
-  // Initialises level l for FMG: Dirichlet values, and 0 at the free pixels of the coarsest
-  // level (finer levels get theirs by interpolation right after).
-  void setDirichletValues(int l) {
-    const GridProblem& problem = (*problems_)[l];
-    const Level& level = levels_[l];
-    const bool coarsest = l + 1 == static_cast<int>(levels_.size());
-    for (int y = 0; y < level.height; ++y) {
-      for (int x = 0; x < level.width; ++x) {
-        const int q = y * level.width + x;
-        Px& value = u_[l][level.index(x, y)];
-        if (problem.fixed[q]) {
-          for (int c = 0; c < C; ++c) setChannel(value, c, problem.values[q * C + c]);
-        } else if (coarsest) {
-          value = Px{};
-        }
-      }
-    }
-  }
-
-  // Preconditioned conjugate gradients on level l, from the interpolated start in u_[l]; the
-  // preconditioner is one V-cycle from zero on the residual, balanced (see precondition). The
-  // coarse problems are re-rasterised, not Galerkin products, so a region coupled to its Dirichlet
-  // pixels only through gaps between barriers can be coupled many times more weakly (or strongly)
-  // on a coarse grid: as a stationary iteration the V-cycle then overshoots and diverges (or
-  // stalls). As a preconditioner it stays symmetric positive definite (symmetric smoothing,
-  // restriction = transposed prolongation, SPD coarse problems), and CG removes the few
-  // badly scaled error components those regions add in about as many iterations.
-  void conjugateGradients(int l, FineProgress& progress) {
-    const bool finest = l == 0;
-    const bool until_converged = finest && options_.tolerance > 0.0;
-    const bool record = finest && (options_.record_residuals || until_converged);
-    const int iterations = until_converged ? options_.max_fine_cycles
-                           : finest        ? options_.fine_cycles
-                                           : options_.intermediate_cycles;
-    const Level& level = levels_[l];
-    Px* __restrict u = u_[l].data();
-    Px* __restrict r = r_.data();
-    Px* __restrict z = z_.data();
-    Px* __restrict p = p_.data();
-    Px* __restrict ap = ap_.data();
-    // Over the whole layout: the buffers are sized for the finest level, and this level's
-    // ghost border and Dirichlet pixels must read 0 in r, z and p.
-    for (size_t i = 0; i < level.size; ++i) r[i] = residualAt(level, u, nullptr, i);
-    if (record) progress.residuals.push_back(residualNorm(l, r));
-    Sum rz_previous{};
-    for (int k = 0; k < iterations; ++k) {
-      precondition(l, r, z);
-      const Sum rz = sumOverFree(l, [&](int i) { return r[i] * z[i]; });
-      if (record) {
-        // z = B r approximates the error of u (exactly if the V-cycle inverted A).
-        const double estimate = maxOverFree(l, z);
-        progress.error_estimates.push_back(estimate);
-        if (until_converged && estimate <= options_.tolerance) {
-          progress.converged = true;
-          break;
-        }
-      }
-      const Px beta = k == 0 ? Px{} : ratio(rz, rz_previous);
-      rz_previous = rz;
-      // p stays 0 where z is (Dirichlet pixels, ghost border); at k = 0 p_ holds another
-      // level's layout.
-      if (k == 0) {
-        std::copy_n(z, level.size, p);
-      } else {
-        for (size_t i = 0; i < level.size; ++i) p[i] = z[i] + beta * p[i];
-      }
-      const Sum pap = sumOverFree(l, [&](int i) {
-        ap[i] = -residualAt(level, p, nullptr, i);  // A p (p is 0 at Dirichlet pixels)
-        return p[i] * ap[i];
-      });
-      const Px alpha = ratio(rz, pap);
-      Sum update_squares{};
-      const Sum rr = sumOverFree(l, [&](int i) {
-        const Px step = alpha * p[i];
-        u[i] += step;
-        r[i] -= alpha * ap[i];
-        accumulate(update_squares, step * step);
-        return r[i] * r[i];
-      });
-      if (finest) ++progress.iterations;
-      if (record) {
-        progress.residuals.push_back(rms(l, rr));
-        progress.updates.push_back(rms(l, update_squares));
-      }
-    }
-  }
-
-  // z = (I - Q A) B (I - A Q) r + Q r: the V-cycle B balanced by the coarse space of the free
-  // components' constants (Mandel's balancing; Nicolaides' deflation), Q = W (W^T A W)^-1 W^T
-  // with W the components' indicator vectors. A region that reaches its Dirichlet pixels only
-  // through a few gaps is nearly singular: its constant mode is pinned by those few links and
-  // every coarse grid pins it differently, so the V-cycle corrects it by a wrong factor; Q
-  // corrects it exactly. Components are not linked, so W^T A W is diagonal, and as A's
-  // internal links cancel in a component's sum, W^T A v is the sum of pin links * v over the
-  // pinned pixels. Symmetric positive definite whenever B is.
-  void precondition(int l, const Px* __restrict r, Px* __restrict z) {
-    const Level& level = levels_[l];
-    const size_t components = static_cast<size_t>(level.component_count);
-    Px* __restrict balanced = balanced_.data();
-    pins_.assign(components, 0.0);
-    sums_.assign(components, Sum{});
-    for (const Level::Pinned& pin : level.pinned) pins_[level.component[pin.pixel]] += pin.links;
-    for (size_t i = 0; i < level.size; ++i) {
-      if (level.component[i] >= 0) accumulate(sums_[level.component[i]], r[i]);
-    }
-    constant_.resize(components);  // Q r per component
-    for (size_t k = 0; k < components; ++k) constant_[k] = ratio(sums_[k], pins_[k]);
-    std::copy_n(r, level.size, balanced);
-    for (const Level::Pinned& pin : level.pinned) {
-      balanced[pin.pixel] -= pin.links * constant_[level.component[pin.pixel]];  // - A Q r
-    }
-    std::fill_n(z, level.size, Px{});
-    vcycle(l, z, balanced);
-    sums_.assign(components, Sum{});
-    for (const Level::Pinned& pin : level.pinned) {
-      accumulate(sums_[level.component[pin.pixel]], pin.links * z[pin.pixel]);  // W^T A z
-    }
-    for (size_t k = 0; k < components; ++k) constant_[k] -= ratio(sums_[k], pins_[k]);
-    for (size_t i = 0; i < level.size; ++i) {
-      if (level.component[i] >= 0) z[i] += constant_[level.component[i]];
-    }
-  }
-
-  void vcycle(int l, Px* u, const Px* f) {
-    const int coarsest = static_cast<int>(levels_.size()) - 1;
+  // One V-cycle on level l for A u = f, from u or, with `from_zero`, from 0 (u is then not read
+  // at the free points; its other points must be 0).
+  void vcycle(int l, Px* u, const Px* f, bool from_zero) {
+    const int coarsest = levelCount() - 1;
     if (l == coarsest) {
-      smoothSymmetric(l, u, f, options_.coarsest_sweeps);
+      solveCoarsest(u, f);
       return;
     }
-    smooth(l, u, f, options_.pre_smoothing, false);
-    restrictResidual(l, u, f, f_[l + 1].data());
-    std::fill(u_[l + 1].begin(), u_[l + 1].end(), Px{});
-    vcycle(l + 1, u_[l + 1].data(), f_[l + 1].data());
+    const int pre = options_.pre_smoothing, post = options_.post_smoothing;
+    if (from_zero && pre == 0) zeroFree(l, u);
+    if (l == 0) {
+      smoothFine(u, f, pre, false, from_zero);
+    } else {
+      smoothCoarse(coarse_[l - 1], u, f, pre, false, from_zero);
+    }
+    if (l == 0 && pre > 0) {
+      // The pre-smoothing ended with the black half-sweep: the black pixels' residual is 0.
+      const FineLevel& fine = fine_;
+      restrictFrom<true>(
+          fine, l, [&](size_t p) { return residualAt(fine, u, f, p); }, f_[1].data());
+    } else {
+      restrictResidual(l, u, f, f_[l + 1].data());
+    }
+    vcycle(l + 1, u_[l + 1].data(), f_[l + 1].data(), true);
     prolong<true>(l, u_[l + 1].data(), u);
-    smooth(l, u, f, options_.post_smoothing, true);  // the adjoint of the pre-smoothing
+    // The adjoint of the pre-smoothing.
+    if (l == 0) {
+      smoothFine(u, f, post, true, false);
+    } else {
+      smoothCoarse(coarse_[l - 1], u, f, post, true, false);
+    }
   }
 
-  // Sweeps alternating red-black and black-red order: an even count is a symmetric operator.
-  void smoothSymmetric(int l, Px* u, const Px* f, int sweeps) const {
-    for (int sweep = 0; sweep < sweeps; ++sweep) smooth(l, u, f, 1, sweep % 2 == 1);
+  void zeroFree(int l, Px* u) const {
+    const size_t size = l == 0 ? fine_.size : coarse_[l - 1].size;
+    for (size_t p = 0; p < size; ++p) {
+      if (l > 0 || fine_.isFree(static_cast<int>(p))) u[p] = Px{};
+    }
   }
 
-  // Red-black Gauss-Seidel on the free pixels: u_p = (f_p + sum w u_q) / sum w, red pixels
-  // (x + y even) first, or black first if `black_first`. The second half-sweep trails the
-  // first by a row, so one pass over memory does a full sweep.
-  void smooth(int l, Px* u, const Px* f, int sweeps, bool black_first) const {
-    const Level& level = levels_[l];
+  // Red-black Gauss-Seidel on the free pixels of the finest level: u_p = (f_p + sum w u_q) /
+  // sum w, red pixels (x + y even) first, or black first if `black_first`. The second
+  // half-sweep trails the first by a row, so one pass over memory does a full sweep. From
+  // zero, the first half-sweep reads no neighbours.
+  void smoothFine(Px* u, const Px* f, int sweeps, bool black_first, bool from_zero) const {
     const int order = black_first ? 1 : 0;
     for (int sweep = 0; sweep < sweeps; ++sweep) {
-      for (int y = 0; y <= level.height; ++y) {
+      const bool leading_from_zero = from_zero && sweep == 0;
+      for (int y = 0; y <= fine_.height; ++y) {
         const int first_x = (y + order) & 1;  // leading row y, trailing row y - 1: other colour
-        if (f) {
-          if (y < level.height) relaxRow<true>(level, u, f, y, first_x);
-          if (y > 0) relaxRow<true>(level, u, f, y - 1, first_x);
-        } else {
-          if (y < level.height) relaxRow<false>(level, u, f, y, first_x);
-          if (y > 0) relaxRow<false>(level, u, f, y - 1, first_x);
+        if (y < fine_.height) {
+          if (leading_from_zero) {
+            relaxRowFromZero(u, f, y, first_x);
+          } else if (f) {
+            relaxRow<true>(u, f, y, first_x);
+          } else {
+            relaxRow<false>(u, f, y, first_x);
+          }
+        }
+        if (y > 0) {
+          if (f) {
+            relaxRow<true>(u, f, y - 1, first_x);
+          } else {
+            relaxRow<false>(u, f, y - 1, first_x);
+          }
         }
       }
     }
   }
 
-  // Relaxes the pixels x = first_x, first_x + 2, ... of row y.
+  // Relaxes the pixels x = first_x, first_x + 2, ... of row y of the finest level.
   template <bool kHasRhs>
-  static void relaxRow(const Level& level, Px* __restrict u, const Px* __restrict f, int y,
-                       int first_x) {
-    const int s = level.stride;
-    const std::uint8_t* __restrict mask = level.mask.data();
-    for (int p = level.index(first_x, y), end = level.index(level.width, y); p < end; p += 2) {
+  void relaxRow(Px* __restrict u, const Px* __restrict f, int y, int first_x) const {
+    const int s = fine_.stride;
+    const std::uint8_t* __restrict mask = fine_.mask.data();
+    for (int p = fine_.index(first_x, y), end = fine_.index(fine_.width, y); p < end; p += 2) {
       const std::uint8_t m = mask[p];
       if (m == kAllLinks) {  // the common case: an interior pixel away from curves
         Px sum = u[p - 1] + u[p + 1] + u[p - s] + u[p + s];
@@ -366,114 +515,268 @@ class Multigrid {
     }
   }
 
-  // The residual f - A u at pixel p: 0 at Dirichlet pixels and in the ghost border.
-  static Px residualAt(const Level& level, const Px* __restrict u, const Px* __restrict f,
-                       size_t p) {
-    const size_t s = static_cast<size_t>(level.stride);
-    const std::uint8_t m = level.mask[p];
-    Px r;
-    if (m == kAllLinks) {
-      r = u[p - 1] + u[p + 1] + u[p - s] + u[p + s] - 4.0f * u[p];
-    } else if (m & kFixed) {
-      return Px{};
-    } else {
-      const LinkWeights& w = kWeights[m];
-      r = w.left * (u[p - 1] - u[p]) + w.right * (u[p + 1] - u[p]) + w.up * (u[p - s] - u[p]) +
-          w.down * (u[p + s] - u[p]);
+  // The first half-sweep from u = 0: u_p = f_p / sum w.
+  void relaxRowFromZero(Px* __restrict u, const Px* __restrict f, int y, int first_x) const {
+    const std::uint8_t* __restrict mask = fine_.mask.data();
+    for (int p = fine_.index(first_x, y), end = fine_.index(fine_.width, y); p < end; p += 2) {
+      const std::uint8_t m = mask[p];
+      if (!(m & kFixed)) u[p] = f[p] * kWeights[m].inv_degree;
     }
-    return f ? r + f[p] : r;
   }
 
-  // RMS of a residual field of level l (0 at Dirichlet pixels) or, without one, of u's.
-  double residualNorm(int l, const Px* r = nullptr) const {
-    const Level& level = levels_[l];
-    const Px* u = u_[l].data();
-    return rms(l, sumOverFree(l, [&](int i) {
-                 const Px value = r ? r[i] : residualAt(level, u, nullptr, i);
-                 return value * value;
-               }));
-  }
-
-  // Restricts the residual of level l to level l + 1 with the transpose of the correction
-  // prolongation (same sources, same weights), which keeps the V-cycle symmetric: each fine
-  // pixel sends its residual to the coarse cells its correction comes from, so a free pixel
-  // in a Dirichlet coarse cell sends it to the free neighbours instead of losing it (next to
-  // a curve that residual carries the smooth error of a whole region). The unscaled coarse
-  // Laplacian matches this transpose's weights (4 per coarse cell); a grid side of 1 pixel
-  // is not coarsened and gives half of them, so its factor 2 is applied explicitly.
-  void restrictResidual(int l, const Px* __restrict u, const Px* __restrict f,
-                        Px* __restrict fc) const {
-    const Level& fine = levels_[l];
-    const Level& coarse = levels_[l + 1];
-    const float scale = (fine.width == 1 ? 2.0f : 1.0f) * (fine.height == 1 ? 2.0f : 1.0f);
-    std::fill_n(fc, coarse.size, Px{});
-    for (int y = 0; y < fine.height; ++y) {
-      const int cy = fine.coarse_y[y], ny = fine.coarse_y_neighbour[y];
-      const int p0 = fine.index(0, y);
-      for (int x = 0; x < fine.width; ++x) {
-        const std::uint8_t sources = fine.correction_sources[p0 + x];
-        if (sources == kNoSources) continue;
-        const int cx = fine.coarse_x[x], nx = fine.coarse_x_neighbour[x];
-        const ProlongationWeights& w = kProlongation[sources];
-        const Px r = scale * residualAt(fine, u, f, static_cast<size_t>(p0 + x));
-        fc[coarse.index(cx, cy)] += w.near * r;
-        fc[coarse.index(nx, cy)] += w.x * r;
-        fc[coarse.index(cx, ny)] += w.y * r;
-        fc[coarse.index(nx, ny)] += w.xy * r;
+  // Lexicographic Gauss-Seidel on a coarse level, forwards or (the adjoint) backwards. Points
+  // that are not unknowns have zero rows and stay 0. From zero, the first (forward) sweep
+  // reads only the neighbours it has already relaxed.
+  static void smoothCoarse(const CoarseLevel& level, Px* __restrict u, const Px* __restrict f,
+                           int sweeps, bool backwards, bool from_zero) {
+    const std::uint8_t* __restrict regular = level.regular.data();
+    const float* __restrict inverse = level.inverse_centre.data();
+    const Stencil& stencil = level.regular_stencil;
+    // The regular stencil is symmetric: one coupling for the four edge neighbours, one for the
+    // four corners.
+    const float edge = stencil[kE], corner = stencil[kSE], inverse_regular = 1.0f / stencil[kC];
+    const int s = level.stride;
+    const auto relax = [&](int p) {
+      if (regular[p]) {
+        const Px edges = (u[p - 1] + u[p + 1]) + (u[p - s] + u[p + s]);
+        const Px corners = (u[p - s - 1] + u[p - s + 1]) + (u[p + s - 1] + u[p + s + 1]);
+        u[p] = (f[p] - edge * edges - corner * corners) * inverse_regular;
+      } else {
+        u[p] = (f[p] - offDiagonal(level, u, p)) * inverse[p];
+      }
+    };
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
+      if (from_zero && sweep == 0) {
+        for (int y = 0; y < level.height; ++y) {
+          for (int p = level.index(0, y), end = level.index(level.width, y); p < end; ++p) {
+            u[p] = (f[p] - backwardOffDiagonal(level, u, p)) * inverse[p];
+          }
+        }
+        continue;
+      }
+      for (int row = 0; row < level.height; ++row) {
+        const int y = backwards ? level.height - 1 - row : row;
+        if (backwards) {
+          for (int p = level.index(level.width - 1, y), end = level.index(0, y); p >= end; --p) {
+            relax(p);
+          }
+        } else {
+          for (int p = level.index(0, y), end = level.index(level.width, y); p < end; ++p) {
+            relax(p);
+          }
+        }
       }
     }
   }
 
-  // Bilinear interpolation of the coarse field to the fine free pixels: added as a
-  // correction (V-cycle) or assigned as the initial guess (FMG), with the sources each pixel
-  // may use (see prolongationSources). kProlongation entries with no source are all zero.
+  // The off-diagonal part of a coarse row times u.
+  __attribute__((always_inline)) static Px offDiagonal(const CoarseLevel& level,
+                                                       const Px* __restrict u, int p) {
+    const int s = level.stride;
+    return backwardOffDiagonal(level, u, p) + level.east[p] * u[p + 1] + level.south[p] * u[p + s] +
+           level.south_east[p] * u[p + s + 1] + level.south_west[p] * u[p + s - 1];
+  }
+
+  // Its part towards the neighbours before p (west, north-west, north, north-east).
+  __attribute__((always_inline)) static Px backwardOffDiagonal(const CoarseLevel& level,
+                                                               const Px* __restrict u, int p) {
+    const int s = level.stride;
+    return level.east[p - 1] * u[p - 1] + level.south[p - s] * u[p - s] +
+           level.south_east[p - s - 1] * u[p - s - 1] + level.south_west[p - s + 1] * u[p - s + 1];
+  }
+
+  // The residual f - A u at pixel p of the finest level; without f, u holds the Dirichlet
+  // values (the right-hand side). 0 at Dirichlet pixels and in the ghost border. With the
+  // solution's values in u, summed as differences of neighbouring values, which are exact in
+  // floating point where the values are close: a sum of four values less 4 u loses ~1e-7
+  // absolute per pixel, which in a region pinned by a few pixels adds up to errors of 1e-4 in
+  // the solution. A correction (with f) has small values and takes the cheaper form.
+  __attribute__((always_inline)) static Px residualAt(const FineLevel& level,
+                                                      const Px* __restrict u,
+                                                      const Px* __restrict f, size_t p) {
+    if (f) return f[p] - operatorAt(level, u, p);
+    const size_t s = static_cast<size_t>(level.stride);
+    const std::uint8_t m = level.mask[p];
+    if (m == kAllLinks) {
+      const Px centre = u[p];
+      return ((u[p - 1] - centre) + (u[p + 1] - centre)) +
+             ((u[p - s] - centre) + (u[p + s] - centre));
+    }
+    if (m & kFixed) return Px{};
+    const LinkWeights& w = kWeights[m];
+    return w.left * (u[p - 1] - u[p]) + w.right * (u[p + 1] - u[p]) + w.up * (u[p - s] - u[p]) +
+           w.down * (u[p + s] - u[p]);
+  }
+
+  // (A v)(p) on the finest level for a field v that is 0 at Dirichlet pixels (a correction or
+  // a search direction: small values, so no care for cancellation).
+  __attribute__((always_inline)) static Px operatorAt(const FineLevel& level,
+                                                      const Px* __restrict v, size_t p) {
+    const size_t s = static_cast<size_t>(level.stride);
+    const std::uint8_t m = level.mask[p];
+    if (m == kAllLinks) return 4.0f * v[p] - ((v[p - 1] + v[p + 1]) + (v[p - s] + v[p + s]));
+    if (m & kFixed) return Px{};
+    const LinkWeights& w = kWeights[m];
+    return (w.left + w.right + w.up + w.down) * v[p] -
+           (w.left * v[p - 1] + w.right * v[p + 1] + w.up * v[p - s] + w.down * v[p + s]);
+  }
+
+  __attribute__((always_inline)) static Px residualAt(const CoarseLevel& level,
+                                                      const Px* __restrict u,
+                                                      const Px* __restrict f, size_t p) {
+    const int q = static_cast<int>(p);
+    return f[q] - level.centre[q] * u[q] - offDiagonal(level, u, q);
+  }
+
+  // Restricts the residual of level l to level l + 1 with P^T: each fine point sends its
+  // residual to the coarse points its correction comes from, with the same weights.
+  void restrictResidual(int l, const Px* u, const Px* f, Px* fc) const {
+    if (l == 0) {
+      const FineLevel& fine = fine_;
+      restrictFrom(
+          fine, l, [&](size_t p) { return residualAt(fine, u, f, p); }, fc);
+    } else {
+      const CoarseLevel& fine = coarse_[l - 1];
+      restrictFrom(
+          fine, l, [&](size_t p) { return residualAt(fine, u, f, p); }, fc);
+    }
+  }
+
+  // P^T times the fine field residual(p) of level l into fc (level l + 1), cell by cell; a
+  // cell's square sends to its own coarse row and the next, which is cleared just before. With
+  // kBlackZero the residual is known to be 0 at the edge points (x + y odd).
+  template <bool kBlackZero = false, class Op, class Residual>
+  void restrictFrom(const Op& fine, int l, Residual&& residual, Px* __restrict fc) const {
+    const CoarseLevel& coarse = coarse_[l];
+    const Transfer& transfer = transfers_[l];
+    const int fs = fine.stride, cs = coarse.stride;
+    std::fill_n(fc, coarse.index(-1, 1), Px{});  // the ghost row above and row 0
+    for (int j = 0; j < coarse.height; ++j) {
+      std::fill_n(fc + coarse.index(-1, j + 1), coarse.width + 2, Px{});
+      // The x-edge and y-edge points (and so the centre) of the last cells can lie outside.
+      const bool y_inside = 2 * j + 1 < fine.height;
+      for (int i = 0; i < coarse.width; ++i) {
+        const int c = coarse.index(i, j);
+        const size_t p = static_cast<size_t>(fine.index(2 * i, 2 * j));
+        const CellWeights& w = transfer[c];
+        const bool x_inside = 2 * i + 1 < fine.width;
+        const Px r00 = residual(p);
+        const Px r11 = x_inside && y_inside ? residual(p + fs + 1) : Px{};
+        if constexpr (kBlackZero) {
+          fc[c] += r00 + w.nw * r11;
+          fc[c + 1] += w.ne * r11;
+          fc[c + cs] += w.sw * r11;
+        } else {
+          const Px r10 = x_inside ? residual(p + 1) : Px{};
+          const Px r01 = y_inside ? residual(p + fs) : Px{};
+          fc[c] += r00 + w.x_west * r10 + w.y_north * r01 + w.nw * r11;
+          fc[c + 1] += w.x_east * r10 + w.ne * r11;
+          fc[c + cs] += w.y_south * r01 + w.sw * r11;
+        }
+        fc[c + cs + 1] += w.se * r11;
+      }
+    }
+  }
+
+  // P times the coarse field: added to u (a correction) or, for FMG, assigned to the free
+  // points of level l (the interpolated solution).
   template <bool kAdd>
   void prolong(int l, const Px* __restrict coarse_values, Px* __restrict u) const {
-    const Level& fine = levels_[l];
-    const Level& coarse = levels_[l + 1];
-    const std::uint8_t* all_sources =
-        kAdd ? fine.correction_sources.data() : fine.solution_sources.data();
-    for (int y = 0; y < fine.height; ++y) {
-      const int cy = fine.coarse_y[y], ny = fine.coarse_y_neighbour[y];
-      const int p0 = fine.index(0, y);
-      for (int x = 0; x < fine.width; ++x) {
-        const std::uint8_t sources = all_sources[p0 + x];
-        if (sources == kNoSources) continue;
-        const int cx = fine.coarse_x[x], nx = fine.coarse_x_neighbour[x];
-        const ProlongationWeights& w = kProlongation[sources];
-        const Px value = w.near * coarse_values[coarse.index(cx, cy)] +
-                         w.x * coarse_values[coarse.index(nx, cy)] +
-                         w.y * coarse_values[coarse.index(cx, ny)] +
-                         w.xy * coarse_values[coarse.index(nx, ny)];
-        if constexpr (kAdd) {
-          u[p0 + x] += value;
-        } else {
-          u[p0 + x] = value;
+    const CoarseLevel& coarse = coarse_[l];
+    const Transfer& transfer = transfers_[l];
+    const int fs = l == 0 ? fine_.stride : coarse_[l - 1].stride;
+    const int cs = coarse.stride;
+    const auto store = [&](size_t p, const Px& value) {
+      if constexpr (kAdd) {
+        u[p] += value;
+      } else if (l > 0 || !(fine_.mask[p] & kFixed)) {
+        u[p] = value;
+      }
+    };
+    for (int j = 0; j < coarse.height; ++j) {
+      for (int i = 0; i < coarse.width; ++i) {
+        const int c = coarse.index(i, j);
+        const size_t p = static_cast<size_t>((2 * j + 1) * fs + 2 * i + 1);
+        const CellWeights& w = transfer[c];
+        const Px a = coarse_values[c], b = coarse_values[c + 1];
+        const Px d = coarse_values[c + cs], e = coarse_values[c + cs + 1];
+        store(p, a);
+        store(p + 1, w.x_west * a + w.x_east * b);
+        store(p + fs, w.y_north * a + w.y_south * d);
+        store(p + fs + 1, w.nw * a + w.ne * b + w.sw * d + w.se * e);
+      }
+    }
+  }
+
+  template <class Op>
+  void factoriseCoarsest(const Op& level) {
+    const int w = level.width, n = level.width * level.height;
+    coarsest_.reset(n, w + 1);
+    for (int k = 0; k < n; ++k) {
+      const Stencil a = level.row(level.index(k % w, k / w));
+      if (a[kC] == 0.0f) {  // not an unknown: an identity row keeps it at 0
+        coarsest_.lower(k, k) = 1.0;
+        continue;
+      }
+      coarsest_.lower(k, k) = a[kC];
+      if (k % w > 0) coarsest_.lower(k, k - 1) = a[kW];
+      if (k >= w) {
+        coarsest_.lower(k, k - w) = a[kN];
+        if (k % w > 0) coarsest_.lower(k, k - w - 1) = a[kNW];
+        if (k % w + 1 < w) coarsest_.lower(k, k - w + 1) = a[kNE];
+      }
+    }
+    coarsest_.factorise();
+    coarsest_values_.resize(n);
+  }
+
+  // Solves the coarsest level exactly, per channel.
+  void solveCoarsest(Px* u, const Px* f) {
+    const int l = levelCount() - 1;
+    const int w = l == 0 ? fine_.width : coarse_[l - 1].width;
+    const int stride = w + 2;
+    const int n = coarsest_.size();
+    for (int c = 0; c < C; ++c) {
+      for (int k = 0; k < n; ++k) {
+        coarsest_values_[k] = channel(f[(k / w + 1) * stride + k % w + 1], c);
+      }
+      coarsest_.solve(coarsest_values_.data());
+      for (int k = 0; k < n; ++k) {
+        const int p = (k / w + 1) * stride + k % w + 1;
+        const bool unknown = l == 0 ? fine_.isFree(p) : coarse_[l - 1].isFree(p);
+        // Level 0 as the coarsest: its Dirichlet pixels keep their values.
+        if (unknown) {
+          setChannel(u[p], c, static_cast<float>(coarsest_values_[k]));
+        } else if (l > 0) {
+          setChannel(u[p], c, 0.0f);
         }
       }
     }
   }
 
   void finestValues(float* out) const {
-    const Level& level = levels_[0];
-    for (int y = 0; y < level.height; ++y) {
-      for (int x = 0; x < level.width; ++x) {
-        const Px& value = u_[0][level.index(x, y)];
+    for (int y = 0; y < fine_.height; ++y) {
+      for (int x = 0; x < fine_.width; ++x) {
+        const Px& value = u_[0][fine_.index(x, y)];
         for (int c = 0; c < C; ++c) *out++ = channel(value, c);
       }
     }
   }
 
-  const std::vector<GridProblem>* problems_ = nullptr;
+  const GridProblem* problem_ = nullptr;
   MultigridOptions options_;
-  std::vector<Level> levels_;
-  std::vector<size_t> free_counts_;
-  std::vector<Field> u_, f_;  // per level: solution (FMG) or correction (V-cycle), rhs
-  Field r_, z_, p_, ap_;      // CG: residual, preconditioned residual, direction, A direction
-  Field balanced_;            // precondition: the residual with the components' constants removed
-  std::vector<double> pins_;  // precondition, per component: W^T A W
-  std::vector<Sum> sums_;
-  std::vector<Px> constant_;
+  FineLevel fine_;
+  std::vector<CoarseLevel> coarse_;  // level l + 1 at index l
+  std::vector<Transfer> transfers_;  // from level l + 1 to level l at index l
+  std::vector<std::uint8_t> flags_;  // coarsening scratch
+  BandedCholesky coarsest_;
+  std::vector<double> coarsest_values_;
+  size_t free_count_ = 0;
+  std::vector<Field> u_, f_;        // per level: solution (FMG) or correction (V-cycle), rhs
+  Field r_, z_, p_, ap_;            // CG: residual, preconditioned residual, direction, A direction
+  std::vector<Px> alphas_, betas_;  // CG's step coefficients (its Lanczos matrix)
+  // Floor of the eigenvalue the error estimate divides by (float round-off in long runs).
+  static constexpr double kSmallestRitz = 1e-3;
 };
 
 }  // namespace
@@ -490,19 +793,6 @@ std::vector<std::pair<int, int>> levelSizes(int width, int height, int coarsest_
   return sizes;
 }
 
-void assembleLevels(
-    int width, int height, int coarsest_size,
-    const std::function<void(int width, int height, double scale, GridProblem& level)>& assemble,
-    std::vector<GridProblem>& levels) {
-  const std::vector<std::pair<int, int>> sizes = levelSizes(width, height, coarsest_size);
-  levels.resize(sizes.size());
-  double scale = 1.0;
-  for (size_t l = 0; l < sizes.size(); ++l) {
-    assemble(sizes[l].first, sizes[l].second, scale, levels[l]);
-    scale *= 0.5;
-  }
-}
-
 struct MultigridSolver::Workspaces {
   multigrid_detail::Multigrid<3> color;
   multigrid_detail::Multigrid<1> single;
@@ -511,47 +801,62 @@ struct MultigridSolver::Workspaces {
 MultigridSolver::MultigridSolver() : workspaces_(std::make_unique<Workspaces>()) {}
 MultigridSolver::~MultigridSolver() = default;
 
-void MultigridSolver::solve(const std::vector<GridProblem>& levels, const MultigridOptions& options,
+void MultigridSolver::solve(const GridProblem& problem, const MultigridOptions& options,
                             std::vector<float>& values, MultigridReport* report) {
-  // Bad input is reported by the other overload; only a valid finest level sizes `values`.
-  if (!levels.empty() && levels.front().width > 0 && levels.front().height > 0 &&
-      levels.front().channels > 0) {
-    values.resize(static_cast<size_t>(levels.front().pixelCount()) * levels.front().channels);
+  // Bad input is reported by the other overload; only a valid problem sizes `values`.
+  if (problem.width > 0 && problem.height > 0 && problem.channels > 0) {
+    values.resize(static_cast<size_t>(problem.pixelCount()) * problem.channels);
   }
-  solve(levels, options, values.data(), report);
+  solve(problem, options, values.data(), report);
 }
 
-void MultigridSolver::solve(const std::vector<GridProblem>& levels, const MultigridOptions& options,
+namespace {
+
+void validate(const GridProblem& problem, const MultigridOptions& options) {
+  if (problem.width <= 0 || problem.height <= 0) {
+    throw std::invalid_argument("solveMultigrid: empty grid");
+  }
+  if (problem.channels != 1 && problem.channels != 3) {
+    throw std::invalid_argument("solveMultigrid: only 1 or 3 channels are supported, got " +
+                                std::to_string(problem.channels));
+  }
+  const size_t n = static_cast<size_t>(problem.pixelCount());
+  if (problem.couples_right.size() != n || problem.couples_down.size() != n ||
+      problem.fixed.size() != n || problem.values.size() != n * problem.channels) {
+    throw std::invalid_argument("solveMultigrid: the problem's arrays do not match its " +
+                                std::to_string(problem.width) + " x " +
+                                std::to_string(problem.height) + " grid");
+  }
+  if (options.coarsest_size < 1 || options.coarsest_size > MultigridOptions::kMaxCoarsestSize) {
+    throw std::invalid_argument("solveMultigrid: coarsest_size must be 1.." +
+                                std::to_string(MultigridOptions::kMaxCoarsestSize) + ", got " +
+                                std::to_string(options.coarsest_size));
+  }
+  if (options.pre_smoothing < 0 || options.post_smoothing < 0 || options.intermediate_cycles < 0 ||
+      options.next_to_finest_cycles < 0 || options.max_fine_cycles < 0 || options.fine_cycles < 0 ||
+      !(options.tolerance >= 0.0)) {
+    throw std::invalid_argument("solveMultigrid: negative counts or tolerance");
+  }
+}
+
+}  // namespace
+
+void MultigridSolver::solve(const GridProblem& problem, const MultigridOptions& options,
                             float* values, MultigridReport* report) {
-  if (levels.empty()) throw std::invalid_argument("solveMultigrid: no levels");
-  const int channels = levels.front().channels;
-  for (size_t l = 0; l < levels.size(); ++l) {
-    const GridProblem& level = levels[l];
-    if (level.channels != channels || level.width <= 0 || level.height <= 0) {
-      throw std::invalid_argument("solveMultigrid: level " + std::to_string(l) +
-                                  " is empty or has a different channel count");
-    }
-    if (l > 0 && (level.width != (levels[l - 1].width + 1) / 2 ||
-                  level.height != (levels[l - 1].height + 1) / 2)) {
-      throw std::invalid_argument("solveMultigrid: level " + std::to_string(l) +
-                                  " is not half the size of the level above");
-    }
-  }
-  if (channels == 3) {
-    workspaces_->color.prepare(levels, options);
+  validate(problem, options);
+  if (problem.channels == 3) {
+    workspaces_->color.prepare(problem, options);
     workspaces_->color.solve(values, report);
-  } else if (channels == 1) {
-    workspaces_->single.prepare(levels, options);
-    workspaces_->single.solve(values, report);
   } else {
-    throw std::invalid_argument("solveMultigrid: only 1 or 3 channels are supported");
+    workspaces_->single.prepare(problem, options);
+    workspaces_->single.solve(values, report);
   }
 }
 
-std::vector<float> solveMultigrid(const std::vector<GridProblem>& levels,
-                                  const MultigridOptions& options, MultigridReport* report) {
+std::vector<float> solveMultigrid(const GridProblem& problem, const MultigridOptions& options,
+                                  MultigridReport* report) {
   std::vector<float> values;
-  MultigridSolver().solve(levels, options, values, report);
+  MultigridSolver().solve(problem, options, values, report);
   return values;
 }
 

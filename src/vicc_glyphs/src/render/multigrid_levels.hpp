@@ -1,10 +1,20 @@
 #pragma once
-// The solver layout of one multigrid level and the curve-aware transfer rules between two
-// levels (internal to the renderer; used by multigrid.cpp).
+// The operators of the multigrid hierarchy (internal to the renderer; used by multigrid.cpp and
+// the tests). Level 0 is the GridProblem's 5-point graph Laplacian over its free pixels, kept as
+// one link byte per pixel; every coarser level is the Galerkin product R A P of the level above,
+// with an operator-dependent prolongation P (black box multigrid: Alcouffe, Brandt, Dendy and
+// Painter 1981; Dendy 1982) and R = P^T. Coarse point (i, j) is fine point (2i, 2j)
+// (vertex-centred coarsening); the coarse operators are 9-point stencils.
+//
+// Why Galerkin: a coarse problem rasterised again from the curves couples a region that reaches
+// its Dirichlet pixels only through gaps in barriers more weakly or more strongly than the fine
+// problem does, differently on every level, and the coarse correction of that region's smooth
+// error is then off by that factor. R A P has, for every coarse vector v, exactly the energy of
+// P v on the fine grid, gaps included, and P follows the links (it never interpolates across a
+// cut link), so the coarse grids see the barriers and the gaps as the fine grid does.
 
 #include <array>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 #include "vicc_glyphs/render/grid_problem.hpp"
@@ -12,8 +22,8 @@
 
 namespace vicc_glyphs::multigrid_detail {
 
-// Per-pixel link bits: which of the four neighbours the pixel is coupled to, plus the
-// Dirichlet flag. One byte per pixel keeps the smoother's memory traffic low.
+// Per-pixel link bits of level 0: which of the four neighbours the pixel is coupled to, plus
+// the Dirichlet flag. One byte per pixel keeps the smoother's memory traffic low.
 inline constexpr std::uint8_t kLeft = 1, kRight = 2, kUp = 4, kDown = 8, kFixed = 16;
 inline constexpr std::uint8_t kAllLinks = kLeft | kRight | kUp | kDown;
 
@@ -34,85 +44,98 @@ inline constexpr LinkWeights kWeights[16] = {
     linkWeights(8),  linkWeights(9),  linkWeights(10), linkWeights(11),
     linkWeights(12), linkWeights(13), linkWeights(14), linkWeights(15)};
 
-// Normalised bilinear weights (9, 3, 3, 1) / 16 of the four coarse sources of a fine pixel:
-// the coarse cell containing it, its horizontal, vertical and diagonal neighbour, for each
-// combination of usable sources (bit 0: horizontal, 1: vertical, 2: diagonal, 3: own cell).
-struct ProlongationWeights {
-  float near, x, y, xy;
-};
+// One row of a level's matrix (over its free points) as a 3 x 3 stencil, row-major: entry
+// (dy + 1) * 3 + (dx + 1) couples the point to its neighbour (x + dx, y + dy). All zero at
+// Dirichlet points, outside the grid and in the ghost border.
+using Stencil = std::array<float, 9>;
+inline constexpr int kNW = 0, kN = 1, kNE = 2, kW = 3, kC = 4, kE = 5, kSW = 6, kS = 7, kSE = 8;
 
-inline constexpr int kNear = 8;
-inline constexpr std::uint8_t kNoSources = 255;  // nothing to interpolate (a Dirichlet pixel)
-
-constexpr ProlongationWeights prolongationWeights(int usable) {
-  const float near = usable & kNear ? 9.0f : 0.0f;
-  const float x = usable & 1 ? 3.0f : 0.0f, y = usable & 2 ? 3.0f : 0.0f;
-  const float xy = usable & 4 ? 1.0f : 0.0f;
-  const float total = near + x + y + xy;
-  if (total == 0.0f) return {0.0f, 0.0f, 0.0f, 0.0f};
-  return {near / total, x / total, y / total, xy / total};
-}
-
-template <size_t... I>
-constexpr std::array<ProlongationWeights, sizeof...(I)> makeProlongationTable(
-    std::index_sequence<I...>) {
-  return {prolongationWeights(static_cast<int>(I))...};
-}
-
-inline constexpr std::array<ProlongationWeights, 16> kProlongation =
-    makeProlongationTable(std::make_index_sequence<16>());
-
-// One level in solver layout: a one-pixel ghost border (Dirichlet, unlinked) around the grid
-// so that no loop needs border cases; values are pixel-major (C floats per pixel).
-struct Level {
+// Level 0: the GridProblem's links, with a one-pixel ghost border (Dirichlet, unlinked) around
+// the grid so that no loop needs border cases.
+struct FineLevel {
   int width = 0;
   int height = 0;
   int stride = 0;
   size_t size = 0;
   render_detail::PixelVector<std::uint8_t> mask;
-  std::vector<int> coarse_x, coarse_x_neighbour;  // bilinear prolongation sources per column
-  std::vector<int> coarse_y, coarse_y_neighbour;  // ... and per row
-  // Per pixel: the coarse sources (kProlongation index) used to interpolate a solution (FMG)
-  // and a correction (V-cycle); see prolongationSources.
-  render_detail::PixelVector<std::uint8_t> solution_sources;
-  render_detail::PixelVector<std::uint8_t> correction_sources;
-  // Per pixel: the connected component of free pixels (over links) it belongs to, -1 at
-  // Dirichlet pixels and in the ghost border; see labelFreeComponents.
-  std::vector<int> component;
-  int component_count = 0;
-  // The free pixels linked to Dirichlet pixels and how many such links each has: all that
-  // ties a component's values down (A = graph Laplacian + this diagonal).
-  struct Pinned {
-    int pixel;
-    float links;
-  };
-  std::vector<Pinned> pinned;
-  render_detail::PixelVector<std::uint8_t> pending;  // scratch of prolongationSources
-  std::vector<int> irregular;                        // ditto
 
   int index(int x, int y) const { return (y + 1) * stride + x + 1; }
+  bool isFree(int p) const { return !(mask[p] & kFixed); }
+  // Degree on the diagonal (links to Dirichlet pixels included), -1 per link to a free pixel.
+  Stencil row(int p) const {
+    const std::uint8_t m = mask[p];
+    if (m & kFixed) return {};
+    const LinkWeights& w = kWeights[m & kAllLinks];
+    const auto coupling = [&](float link, int q) { return mask[q] & kFixed ? 0.0f : -link; };
+    const int s = stride;
+    return {0.0f,
+            coupling(w.up, p - s),
+            0.0f,
+            coupling(w.left, p - 1),
+            w.left + w.right + w.up + w.down,
+            coupling(w.right, p + 1),
+            0.0f,
+            coupling(w.down, p + s),
+            0.0f};
+  }
 };
 
+// A coarse level: the Galerkin operator as the diagonal and the couplings to the east,
+// south-west, south and south-east neighbours (the other four are those neighbours' couplings
+// back: the operator is symmetric by construction). Zero rows at points that are not unknowns
+// (their fine point is a Dirichlet pixel) and in the ghost border, so the smoother leaves them
+// at 0 without a branch.
+struct CoarseLevel {
+  int width = 0;
+  int height = 0;
+  int stride = 0;
+  size_t size = 0;
+  render_detail::PixelVector<float> centre, inverse_centre, east, south_west, south, south_east;
+  // The stencil of the parts away from curves and borders, and per point whether its row is
+  // that one (the smoother's fast path; 0 in the ghost border).
+  Stencil regular_stencil{};
+  render_detail::PixelVector<std::uint8_t> regular;
+
+  int index(int x, int y) const { return (y + 1) * stride + x + 1; }
+  bool isFree(int p) const { return centre[p] > 0.0f; }
+  Stencil row(int p) const {
+    const int s = stride;
+    return {south_east[p - s - 1], south[p - s], south_west[p - s + 1],
+            east[p - 1],           centre[p],    east[p],
+            south_west[p],         south[p],     south_east[p]};
+  }
+};
+
+// The prolongation from coarse cell I = (i, j) to the fine points of its square: (2i, 2j) takes
+// I's value; the x-edge point (2i + 1, 2j) interpolates between I and I + east, the y-edge point
+// (2i, 2j + 1) between I and I + south, the centre point (2i + 1, 2j + 1) between the four
+// corners I, I + east, I + south, I + south-east. Zero weights for fine points that are
+// Dirichlet pixels or outside the grid. Indexed like the coarse level (ghost cells all zero).
+struct CellWeights {
+  float x_west, x_east, y_north, y_south, nw, ne, sw, se;
+};
+inline constexpr CellWeights kBilinearCell{0.5f, 0.5f, 0.5f, 0.5f, 0.25f, 0.25f, 0.25f, 0.25f};
+
+using Transfer = render_detail::PixelVector<CellWeights>;
+
 /// Converts `problem` into `level` (reusing its memory).
-void makeLevel(const GridProblem& problem, Level& level);
+void makeFineLevel(const GridProblem& problem, FineLevel& level);
 
-/// Labels the connected components of the free pixels of `level` (level.component) and
-/// lists its pinned pixels. The Laplacian restricted to the free pixels is block-diagonal over
-/// the components; the solver deflates each one's constant (see multigrid.cpp).
-void labelFreeComponents(Level& level);
+/// Sizes `coarse` for a width x height grid; the ghost border is zero (coarsen() writes the
+/// rest).
+void resizeCoarseLevel(int width, int height, CoarseLevel& coarse);
 
-/// Cell-centred bilinear interpolation: fine cell i lies a quarter cell from coarse cell i/2
-/// towards its neighbour i/2 -/+ 1 (clamped at the border).
-void prolongationTable(int fine, int coarse, std::vector<int>& near, std::vector<int>& neighbour);
+/// Builds the operator-dependent prolongation from `coarse` (sized, operator not yet set) to
+/// `fine`, and then `coarse`'s operator R A P and its regular stencil and flags. Where a
+/// point's neighbourhood is regular (the 5-point Laplacian on level 0, `fine.regular_stencil`
+/// on a coarse level) the result is the regular one, computed once; only the rest is worked
+/// out point by point. `scratch` holds per-point flags between calls.
+void coarsen(const FineLevel& fine, Transfer& transfer, CoarseLevel& coarse,
+             std::vector<std::uint8_t>& scratch);
+void coarsen(const CoarseLevel& fine, Transfer& transfer, CoarseLevel& coarse,
+             std::vector<std::uint8_t>& scratch);
 
-// Which coarse sources each free fine pixel interpolates from. A neighbour source counts only
-// if the fine link from the pixel towards it and the coarse link between it and the pixel's
-// own coarse cell are intact, so values do not leak across a curve (plain bilinear weights
-// mix the two sides' colours into every pixel near a curve). A correction is moreover never
-// taken from a coarse Dirichlet cell: its correction is 0 only because that cell is fixed on
-// the coarse grid. The restriction is the transpose of the correction prolongation.
-// Away from curves and borders all four sources are usable; only the pixels near a fine or
-// coarse pixel that is not fully linked are worked out one by one.
-void prolongationSources(Level& fine, const Level& coarse);
+/// The regular stencil of level 0: the 5-point Laplacian.
+inline constexpr Stencil kFineRegularStencil{0, -1, 0, -1, 4, -1, 0, -1, 0};
 
 }  // namespace vicc_glyphs::multigrid_detail

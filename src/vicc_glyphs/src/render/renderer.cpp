@@ -93,7 +93,7 @@ struct DiffusionCurveRenderer::Workspace {
   GridAssembler assembler;
   MultigridSolver solver;
   CurveAntialiasing antialiasing;
-  std::vector<GridProblem> levels;
+  GridProblem problem;
   cv::Mat sigma;
 };
 
@@ -119,20 +119,14 @@ void DiffusionCurveRenderer::render(const DiffusionCurveImage& input, const Rend
                             " pixels per render");
   }
   Workspace& w = *workspace_;
-  const int coarsest = options.multigrid.coarsest_size;
 
   Clock::time_point phase = Clock::now();
-  assembleLevels(
-      image.width, image.height, coarsest,
-      [&](int width, int height, double scale, GridProblem& level) {
-        w.assembler.assembleColor(image, width, height, scale, options.background, level);
-      },
-      w.levels);
+  w.assembler.assembleColor(image, image.width, image.height, 1.0, options.background, w.problem);
   result.report.timings.assemble_ms = millisecondsSince(phase);
 
   phase = Clock::now();
   float* diffused = prepareOutput(result.diffused, image.height, image.width, CV_32FC3);
-  w.solver.solve(w.levels, options.multigrid, diffused, &result.report.multigrid);
+  w.solver.solve(w.problem, options.multigrid, diffused, &result.report.multigrid);
   result.report.timings.solve_ms = millisecondsSince(phase);
 
   phase = Clock::now();
@@ -147,14 +141,9 @@ void DiffusionCurveRenderer::render(const DiffusionCurveImage& input, const Rend
 
   if (options.blur && hasBlurPoints(image)) {
     phase = Clock::now();
-    assembleLevels(
-        image.width, image.height, coarsest,
-        [&](int width, int height, double scale, GridProblem& level) {
-          w.assembler.assembleBlur(image, width, height, scale, level);
-        },
-        w.levels);
+    w.assembler.assembleBlur(image, image.width, image.height, 1.0, w.problem);
     float* sigma = prepareOutput(w.sigma, image.height, image.width, CV_32FC1);
-    w.solver.solve(w.levels, options.multigrid, sigma, nullptr);
+    w.solver.solve(w.problem, options.multigrid, sigma, nullptr);
     result.image = applyVariableBlur(result.image, w.sigma);
     result.report.blurred = true;
     result.report.timings.blur_ms = millisecondsSince(phase);
@@ -166,19 +155,6 @@ RenderResult renderDiffusionCurves(const DiffusionCurveImage& image, const Rende
   RenderResult result;
   DiffusionCurveRenderer().render(image, options, result);
   return result;
-}
-
-std::vector<GridProblem> assembleColorLevels(const DiffusionCurveImage& image,
-                                             const Color& background, int coarsest_size) {
-  std::vector<GridProblem> levels;
-  GridAssembler assembler;
-  assembleLevels(
-      image.width, image.height, coarsest_size,
-      [&](int width, int height, double scale, GridProblem& level) {
-        assembler.assembleColor(image, width, height, scale, background, level);
-      },
-      levels);
-  return levels;
 }
 
 void valuesToMat(const std::vector<float>& values, int width, int height, int channels,

@@ -1,20 +1,21 @@
 #pragma once
-// Full multigrid (FMG) for the GridProblem hierarchy of one image. Every level is its own
-// problem, assembled by re-rasterising the curves at that level's resolution (averaging fine
-// constraints into coarse cells does not give a usable coarse problem, see rendering.md):
-// - FMG: the coarsest problem is smoothed to convergence, its solution is interpolated as the
-//   initial guess of the next finer problem, which gets `intermediate_cycles` iterations, and
-//   so on up to the finest level, which iterates until the error estimate is at most
+// Full multigrid (FMG) for the GridProblem of one image, with coarse operators built from the
+// fine one (Galerkin, see docs/rendering.md):
+// - Hierarchy: coarse point (i, j) is fine point (2i, 2j); the prolongation P is
+//   operator-dependent (black box multigrid: it interpolates only along the links, and towards
+//   a Dirichlet pixel it interpolates 0), the restriction is P^T and every coarse operator is
+//   R A P, a 9-point stencil. So every level couples regions, gaps between barriers included,
+//   exactly as strongly as the fine grid does; coarse problems are not rasterised again.
+// - FMG: the Dirichlet data's right-hand side is restricted to every level, the coarsest level
+//   (at most `coarsest_size` points a side) is solved directly (banded Cholesky), its solution
+//   interpolated as the start of the next finer level, which gets `intermediate_cycles`
+//   V-cycles, and so on; the finest level iterates until the error estimate is at most
 //   `tolerance` (or for `fine_cycles` iterations when the tolerance is 0).
-// - Iteration: conjugate gradients preconditioned by one V-cycle (multigrid-preconditioned
-//   CG), robust where barriers leave regions that the coarse problems couple much more weakly
-//   or strongly than the fine one (a plain V-cycle iteration diverges or stalls there).
-// - V-cycle: red-black Gauss-Seidel pre-smoothing and its adjoint (black-red) post-smoothing,
-//   the residual restricted with the transpose of the curve-aware bilinear prolongation
-//   (cell-centred grids, unscaled Laplacian), the coarse level's operator with zero correction
-//   at its Dirichlet cells: a symmetric positive definite preconditioner.
+// - Finest level: conjugate gradients preconditioned by one V-cycle.
+// - V-cycle: red-black Gauss-Seidel on the finest level (black-red after the coarse
+//   correction), lexicographic Gauss-Seidel on the coarse ones (backwards after it): with
+//   R = P^T and equal sweep counts a symmetric positive definite preconditioner.
 
-#include <functional>
 #include <memory>
 #include <vector>
 
@@ -23,23 +24,31 @@
 namespace vicc_glyphs {
 
 struct MultigridOptions {
-  int pre_smoothing = 3;          ///< red-black sweeps before the coarse correction
-  int post_smoothing = 3;         ///< black-red sweeps after it (equal counts: symmetric)
-  int intermediate_cycles = 1;    ///< CG iterations on each level between coarsest and finest
-  int coarsest_sweeps = 100;      ///< smoothing sweeps that solve the coarsest level (even)
-  int coarsest_size = 16;         ///< coarsen until the larger grid side is at most this
+  int pre_smoothing = 1;        ///< sweeps before the coarse correction
+  int post_smoothing = 1;       ///< sweeps after it in reverse order (equal counts: symmetric)
+  int intermediate_cycles = 1;  ///< FMG: V-cycles on the levels between the coarsest and
+                                ///< the one next to the finest
+  /// FMG: V-cycles on the level next to the finest before its solution, interpolated, starts
+  /// the finest level: that start is only as good as this solve, and a cycle there costs about
+  /// a third of one on the finest level (with 3, most icons need no CG iteration at 512 px).
+  int next_to_finest_cycles = 3;
+  int coarsest_size = 16;         ///< coarsen until the larger side is at most this (1..64);
+                                  ///< that level is solved directly
   bool record_residuals = false;  ///< record the finest level's residuals and estimates
   /// > 0 (the default): iterate on the finest level until the error estimate, the largest
-  /// magnitude of the (balanced) V-cycle's correction B r over the free pixels and channels
-  /// (colour units, 0..1), is at most this, at most `max_fine_cycles` times; the history is
-  /// then always recorded. 0: `fine_cycles` iterations, whatever the error.
+  /// magnitude of the V-cycle's correction B r over the free pixels and channels (colour
+  /// units, 0..1), is at most this, at most `max_fine_cycles` times; the history is then
+  /// always recorded, and that last correction is added to the result. 0: `fine_cycles`
+  /// iterations, whatever the error.
   double tolerance = kDefaultTolerance;
   int max_fine_cycles = 50;
   int fine_cycles = 2;  ///< iterations on the finest level when tolerance is 0
 
-  /// About half an 8-bit colour step (1/510): on the ladybug DCI (the slowest sample) the
-  /// true largest error is then about 7x this, the mean error 0.003 (docs/rendering.md).
+  /// About half an 8-bit colour step (1/510); see docs/rendering.md for how the true error
+  /// compares.
   static constexpr double kDefaultTolerance = 2e-3;
+  /// The coarsest level is factorised densely within its band: (size^2) x size doubles.
+  static constexpr int kMaxCoarsestSize = 64;
 };
 
 struct MultigridReport {
@@ -61,15 +70,7 @@ struct MultigridReport {
 /// until the larger side is at most `coarsest_size` (a side of 1 stays 1).
 std::vector<std::pair<int, int>> levelSizes(int width, int height, int coarsest_size);
 
-/// Assembles the hierarchy into `levels` (reusing its storage): `assemble(width, height,
-/// scale, level)` fills every level, with scale = 2^-level (grid pixels per image pixel), so
-/// each level re-rasterises the curves.
-void assembleLevels(
-    int width, int height, int coarsest_size,
-    const std::function<void(int width, int height, double scale, GridProblem& level)>& assemble,
-    std::vector<GridProblem>& levels);
-
-/// Solves hierarchies, keeping its working memory between solves (fresh memory costs page
+/// Solves grid problems, keeping its working memory between solves (fresh memory costs page
 /// faults that can take longer than the solve itself).
 class MultigridSolver {
  public:
@@ -78,15 +79,14 @@ class MultigridSolver {
   MultigridSolver(const MultigridSolver&) = delete;
   MultigridSolver& operator=(const MultigridSolver&) = delete;
 
-  /// Solves levels[0] (finest first; all levels with the same channel count, 1 or 3, each
-  /// half the size of the one before, rounding up). Writes width*height*channels values,
-  /// pixel-major like GridProblem::values, to `values`. Throws std::invalid_argument on bad
-  /// input.
-  void solve(const std::vector<GridProblem>& levels, const MultigridOptions& options,
+  /// Solves `problem` (1 or 3 channels). Writes width*height*channels values, pixel-major like
+  /// GridProblem::values, to `values`. Throws std::invalid_argument on an inconsistent problem
+  /// or options.
+  void solve(const GridProblem& problem, const MultigridOptions& options,
              std::vector<float>& values, MultigridReport* report);
-  /// As above, writing to `values` (room for width*height*channels floats of levels[0]), e.g.
-  /// straight into an output cv::Mat.
-  void solve(const std::vector<GridProblem>& levels, const MultigridOptions& options, float* values,
+  /// As above, writing to `values` (room for width*height*channels floats), e.g. straight
+  /// into an output cv::Mat.
+  void solve(const GridProblem& problem, const MultigridOptions& options, float* values,
              MultigridReport* report);
 
  private:
@@ -95,7 +95,7 @@ class MultigridSolver {
 };
 
 /// One-off solve with a temporary MultigridSolver.
-std::vector<float> solveMultigrid(const std::vector<GridProblem>& levels,
-                                  const MultigridOptions& options, MultigridReport* report);
+std::vector<float> solveMultigrid(const GridProblem& problem, const MultigridOptions& options,
+                                  MultigridReport* report);
 
 }  // namespace vicc_glyphs

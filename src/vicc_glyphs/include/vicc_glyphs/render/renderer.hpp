@@ -1,7 +1,8 @@
 #pragma once
 // Renders a DiffusionCurveImage to an RGB raster (Orzan et al. 2008): colour constraints on
-// both sides of each curve, Laplace diffusion by full multigrid with the constraints
-// re-rasterised on every level, anti-aliasing along the curves, optional blur pass.
+// both sides of each curve, Laplace diffusion by full multigrid (Galerkin coarse operators,
+// multigrid-preconditioned conjugate gradients), anti-aliasing along the curves, optional blur
+// pass.
 
 #include <memory>
 #include <opencv2/core.hpp>
@@ -66,10 +67,6 @@ class DiffusionCurveRenderer {
 /// One-off render with a temporary DiffusionCurveRenderer.
 RenderResult renderDiffusionCurves(const DiffusionCurveImage& image,
                                    const RenderOptions& options = {});
-
-/// The colour problem hierarchy the renderer solves (finest first), for inspection and tests.
-std::vector<GridProblem> assembleColorLevels(const DiffusionCurveImage& image,
-                                             const Color& background, int coarsest_size);
 
 /// Copies pixel-major float values (width*height*channels) into `mat` (CV_32FC(channels)).
 void valuesToMat(const std::vector<float>& values, int width, int height, int channels,

@@ -1,0 +1,51 @@
+#include "banded_cholesky.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vicc_glyphs::multigrid_detail {
+
+void BandedCholesky::reset(int n, int bandwidth) {
+  n_ = n;
+  bandwidth_ = std::max(0, std::min(bandwidth, n - 1));
+  factor_.assign(static_cast<size_t>(n) * (bandwidth_ + 1), 0.0);
+}
+
+void BandedCholesky::factorise() {
+  original_diagonal_.resize(n_);
+  for (int i = 0; i < n_; ++i) original_diagonal_[i] = factorEntry(i, i);
+  for (int i = 0; i < n_; ++i) {
+    const int first = std::max(0, i - bandwidth_);
+    for (int j = first; j <= i; ++j) {
+      double sum = factorEntry(i, j);
+      for (int k = std::max(first, j - bandwidth_); k < j; ++k) {
+        sum -= factorEntry(i, k) * factorEntry(j, k);
+      }
+      if (j < i) {
+        lower(i, j) = sum / factorEntry(j, j);
+      } else {
+        // The coarse operators are positive definite by construction; float round-off in a
+        // nearly singular one (a region pinned by a single pixel) can still leave a pivot at
+        // or below 0. A small positive pivot keeps the coarse solve symmetric positive
+        // definite (the preconditioner stays valid; CG corrects the approximation).
+        const double diagonal = std::abs(original_diagonal_[i]);
+        lower(i, i) = std::sqrt(std::max(sum, kPivotFloor * (diagonal > 0.0 ? diagonal : 1.0)));
+      }
+    }
+  }
+}
+
+void BandedCholesky::solve(double* x) const {
+  for (int i = 0; i < n_; ++i) {  // L y = b
+    double sum = x[i];
+    for (int k = std::max(0, i - bandwidth_); k < i; ++k) sum -= factorEntry(i, k) * x[k];
+    x[i] = sum / factorEntry(i, i);
+  }
+  for (int i = n_ - 1; i >= 0; --i) {  // L^T x = y
+    double sum = x[i];
+    for (int k = i + 1; k <= std::min(n_ - 1, i + bandwidth_); ++k) sum -= factorEntry(k, i) * x[k];
+    x[i] = sum / factorEntry(i, i);
+  }
+}
+
+}  // namespace vicc_glyphs::multigrid_detail
