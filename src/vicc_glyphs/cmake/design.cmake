@@ -12,7 +12,6 @@ add_library(vicc_glyphs_design
   src/design/design_values.cpp
   src/design/gradient_channels.cpp
   src/design/design_builder.cpp
-  src/design/boundary_twins.cpp
 )
 target_compile_options(vicc_glyphs_design PRIVATE ${VICC_WARNINGS})
 target_link_libraries(vicc_glyphs_design vicc_glyphs_pacemod vicc_glyphs_perception
@@ -32,8 +31,7 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(vicc_glyphs_design_test
     test/design/GlyphDesignTest.cpp
     test/design/DesignBuildTest.cpp
-    test/design/IcpColourTest.cpp
-    test/design/BoundaryTwinsTest.cpp)
+    test/design/IcpColourTest.cpp)
   target_compile_options(vicc_glyphs_design_test PRIVATE ${VICC_WARNINGS})
   target_compile_definitions(vicc_glyphs_design_test PRIVATE
     VICC_GLYPHS_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config"

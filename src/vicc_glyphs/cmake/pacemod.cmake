@@ -17,6 +17,9 @@ add_library(vicc_glyphs_pacemod
   src/pacemod/polygon_crossings.cpp
   src/pacemod/curve_selection.cpp
   src/pacemod/sparse_fowler_bartels.cpp
+  src/pacemod/contour_corners.cpp
+  src/pacemod/wave_strips.cpp
+  src/pacemod/offset_fit.cpp
   src/pacemod/contour_waves.cpp
   src/pacemod/periodic_waves.cpp
   src/pacemod/offset_contour.cpp
@@ -45,7 +48,8 @@ endif()
 if(TARGET vicc_glyphs_render AND TARGET vicc_glyphs_io)
   add_library(vicc_glyphs_pacemod_measure STATIC
     bench/pacemod/wave_measurement.cpp
-    bench/pacemod/wave_check.cpp)
+    bench/pacemod/wave_check.cpp
+    bench/pacemod/contour_overlay.cpp)
   target_compile_options(vicc_glyphs_pacemod_measure PRIVATE ${VICC_WARNINGS})
   target_link_libraries(vicc_glyphs_pacemod_measure vicc_glyphs_pacemod)
 

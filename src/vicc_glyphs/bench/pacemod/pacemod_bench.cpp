@@ -3,8 +3,9 @@
 // rendered; then, on the result, the waves along each modified contour are counted and their
 // amplitudes measured from the distance to the original contour (wave_measurement.hpp), and
 // all polygons are checked for crossings. Prints Markdown tables (see README.md here).
-// Usage: vicc_glyphs_pacemod_bench [ICON_DIR] [--quick] [--verbose] [--stretch-at-corners]
-//        [--opencv-labels] [--waveform sine|triangle|sawtooth|rectangle] [--no-render]
+// Usage: vicc_glyphs_pacemod_bench [ICON_DIR] [--quick] [--verbose] [--opencv-labels]
+//        [--waveform sine|triangle|sawtooth|rectangle] [--no-render]
+//        [--icon NAME.svg] [--frequency WAVES_PER_10MM] [--amplitude MM] [--overlays DIR]
 
 #include <algorithm>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "contour_overlay.hpp"
 #include "vicc_glyphs/io/load.hpp"
 #include "vicc_glyphs/pacemod/curve_selection.hpp"
 #include "vicc_glyphs/pacemod/periodic_waves.hpp"
@@ -40,6 +42,7 @@ double threadMilliseconds() {
 bool verbose = false;
 bool render_glyphs = true;  // --no-render: checks only (faster searches for failures)
 WaveOptions options;
+std::string overlay_dir;  // --overlays: an SVG picture of every glyph that fails a check
 
 struct Totals {
   int glyphs = 0;
@@ -94,27 +97,45 @@ void runGlyph(const fs::path& icon, const WaveSpec& spec, DiffusionCurveRenderer
   ++totals.glyphs;
   const measure::GlyphCheck check =
       measure::checkGlyph(original, image, reports, spec, kSize / kSizeMm);
-  if (verbose && (check.new_crossings > 0 || check.lobes_ok < check.lobes_checked ||
-                  check.count_ok < check.count_checked)) {
-    std::fprintf(stderr,
-                 "%s %s f=%g a=%g: crossings %d, lobes %d/%d (worst %.1f %%), count %d/%d\n",
-                 icon.filename().c_str(), waveformName(spec.waveform).c_str(),
-                 spec.waves_per_mm * 10, spec.amplitude_mm, check.new_crossings, check.lobes_ok,
-                 check.lobes_checked, 100 * check.worst_error, check.count_ok, check.count_checked);
+  if (verbose && (check.new_crossings > 0 || !check.failures.empty())) {
+    std::fprintf(
+        stderr,
+        "%s %s f=%g a=%g: crossings %d, full lobes %d/%d, reduced lobes %d/%d, count %d/%d "
+        "+ %d/%d reduced\n",
+        icon.filename().c_str(), waveformName(spec.waveform).c_str(), spec.waves_per_mm * 10,
+        spec.amplitude_mm, check.new_crossings, check.full_lobes_ok, check.full_lobes,
+        check.reduced_lobes_ok, check.reduced_lobes, check.unreduced_count_ok,
+        check.unreduced_contours, check.reduced_count_ok, check.reduced_decidable);
   }
-  if (verbose) {
+  if (verbose && !check.failures.empty()) {
+    for (const CurveWaveReport& r : reports) {
+      int crossing = 0;
+      for (const PeakReduction& p : r.reductions) crossing += p.reason == "crossing";
+      if (!r.reductions.empty()) {
+        std::fprintf(stderr, "    curve %d: %zu of %d knot points reduced (%d by crossings)\n",
+                     r.curve, r.reductions.size(), r.knot_points, crossing);
+      }
+    }
     for (const std::string& failure : check.failures)
       std::fprintf(stderr, "    %s\n", failure.c_str());
+  }
+  if (!overlay_dir.empty() && !check.failures.empty()) {
+    char name[160];
+    std::snprintf(name, sizeof name, "%s/%s_%s_%g_%g.svg", overlay_dir.c_str(), icon.stem().c_str(),
+                  waveformName(spec.waveform).c_str(), spec.waves_per_mm * 10, spec.amplitude_mm);
+    measure::writeContourOverlay(name, original, image, reports, spec, kSize / kSizeMm,
+                                 check.failures, check.failure_points);
   }
   measure::add(totals.check, check);
 }
 
 const char* kColumns =
-    "| glyphs | contours | count ok (decidable) | with all waves | undecidable | lobes within 10 % "
-    "| "
-    "median amp. err % | worst amp. err % | reduced knot points | new crossings | modify ms | "
-    "render ms | total ms median | total ms p95 | total ms max |\n"
-    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    "| glyphs | contours | count ok, unreduced | count ok, reduced (decidable) | undecidable "
+    "| full lobes within 10 % | median err % | worst err % | reduced lobes within 10 % of applied "
+    "| worst err % | reduced knot points (by the polygon check) | new crossings | modify ms | "
+    "render ms | total ms median "
+    "| total ms p95 | total ms max |\n"
+    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 
 void printHeader(const char* first) {
   std::printf("| %s ", first);
@@ -124,12 +145,15 @@ void printHeader(const char* first) {
 void printRow(const std::string& label, const Totals& t) {
   const measure::GlyphCheck& c = t.check;
   std::printf(
-      "| %s | %d | %d | %d/%d | %d | %d | %d/%d | %.1f | %.1f | %d | %d | %.1f | %.1f | %.1f | "
-      "%.1f | %.1f |\n",
-      label.c_str(), t.glyphs, c.contours, c.count_ok, c.count_checked, c.contours_with_all_waves,
-      c.flattened_contours, c.lobes_ok, c.lobes_checked, 100.0 * c.median_error(),
-      100.0 * c.worst_error, c.reduced_peaks, c.new_crossings, median(t.modify_ms),
-      median(t.render_ms), median(t.total_ms), percentile95(t.total_ms), maximum(t.total_ms));
+      "| %s | %d | %d | %d/%d | %d/%d | %d | %d/%d | %.1f | %.1f | %d/%d | %.1f | %d (%d) | %d | "
+      "%.1f "
+      "| %.1f | %.1f | %.1f | %.1f |\n",
+      label.c_str(), t.glyphs, c.contours, c.unreduced_count_ok, c.unreduced_contours,
+      c.reduced_count_ok, c.reduced_decidable, c.reduced_undecidable, c.full_lobes_ok, c.full_lobes,
+      100.0 * c.median_full_error(), 100.0 * c.worst_full_error, c.reduced_lobes_ok,
+      c.reduced_lobes, 100.0 * c.worst_reduced_error, c.reduced_peaks, c.crossing_peaks,
+      c.new_crossings, median(t.modify_ms), median(t.render_ms), median(t.total_ms),
+      percentile95(t.total_ms), maximum(t.total_ms));
 }
 
 }  // namespace
@@ -137,19 +161,26 @@ void printRow(const std::string& label, const Totals& t) {
 int main(int argc, char** argv) {
   fs::path dir = VICC_GLYPHS_DATA_DIR "/icons";
   bool quick = false;
-  std::string only_waveform;
+  std::string only_waveform, only_icon;
+  double only_frequency = 0.0, only_amplitude = -1.0;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--quick") {
       quick = true;
     } else if (arg == "--verbose") {
       verbose = true;
-    } else if (arg == "--stretch-at-corners") {
-      options.stretch_at_corners = true;
     } else if (arg == "--no-render") {
       render_glyphs = false;
     } else if (arg == "--waveform" && i + 1 < argc) {
       only_waveform = argv[++i];
+    } else if (arg == "--icon" && i + 1 < argc) {
+      only_icon = argv[++i];
+    } else if (arg == "--frequency" && i + 1 < argc) {
+      only_frequency = std::stod(argv[++i]);
+    } else if (arg == "--amplitude" && i + 1 < argc) {
+      only_amplitude = std::stod(argv[++i]);
+    } else if (arg == "--overlays" && i + 1 < argc) {
+      overlay_dir = argv[++i];
     } else if (arg == "--opencv-labels") {
       options.feature_transform = FeatureTransform::OpenCvLabels;
     } else {
@@ -158,13 +189,18 @@ int main(int argc, char** argv) {
   }
   std::vector<fs::path> icons;
   for (const auto& entry : fs::directory_iterator(dir)) {
-    if (entry.path().extension() == ".svg") icons.push_back(entry.path());
+    if (entry.path().extension() == ".svg" &&
+        (only_icon.empty() || entry.path().filename() == only_icon)) {
+      icons.push_back(entry.path());
+    }
   }
   std::sort(icons.begin(), icons.end());
-  const std::vector<double> frequencies =
+  std::vector<double> frequencies =
       quick ? std::vector<double>{4} : std::vector<double>{2, 4, 8, 12};
-  const std::vector<double> amplitudes =
+  std::vector<double> amplitudes =
       quick ? std::vector<double>{0.5} : std::vector<double>{0.1, 0.4, 0.8, 1.2};
+  if (only_frequency > 0.0) frequencies = {only_frequency};
+  if (only_amplitude >= 0.0) amplitudes = {only_amplitude};
   DiffusionCurveRenderer renderer;
   RenderResult result;
   std::map<std::string, Totals> by_waveform;

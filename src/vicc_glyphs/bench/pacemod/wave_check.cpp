@@ -14,40 +14,55 @@ namespace pacemod {
 namespace measure {
 namespace {
 
+// Lobes find their knot points within this arc length (px) of their ends.
+constexpr double kLobeEndTolerancePx = 0.5;
+
 struct AppliedPeak {
-  double arc_px;
+  double arc;  ///< fraction of the contour's length
   int sign;
   double amplitude_px;
+  bool reduced;
 };
 
-// The knot points of the contour with the amplitude the guard let through.
+// The knot points of the contour with the amplitude self-intersection prevention let through.
 std::vector<AppliedPeak> appliedPeaks(const CurveWaveReport& report, const WaveSpec& spec,
                                       double px_per_mm) {
-  const WaveLayout layout =
-      waveLayout(spec.waveform, report.wave_count, report.arc_length_mm * px_per_mm);
+  const double length = report.arc_length_mm * px_per_mm;
+  const WaveLayout layout = waveLayout(spec.waveform, report.wave_count, length);
   std::vector<AppliedPeak> peaks;
   for (const WavePeak& peak : layout.peaks) {
-    double amplitude = spec.amplitude_mm * px_per_mm;
+    AppliedPeak applied{peak.arc_length / length, peak.sign, spec.amplitude_mm * px_per_mm, false};
     for (const PeakReduction& r : report.reductions) {
       if (std::abs(r.arc_length_mm * px_per_mm - peak.arc_length) < 1e-6) {
-        amplitude = r.allowed_mm * px_per_mm;
+        applied.amplitude_px = r.allowed_mm * px_per_mm;
+        applied.reduced = true;
       }
     }
-    peaks.push_back({peak.arc_length, peak.sign, amplitude});
+    peaks.push_back(applied);
   }
   // The closing knot point repeats the first one.
-  if (peaks.size() > 1) peaks.back().amplitude_px = peaks.front().amplitude_px;
+  if (peaks.size() > 1) {
+    peaks.back().amplitude_px = peaks.front().amplitude_px;
+    peaks.back().reduced = peaks.front().reduced;
+  }
   return peaks;
 }
 
-// The lobes the applied amplitudes should produce: runs of knot points of one sign (cyclic)
-// form one lobe; a run whose largest amplitude is below kInvisible of the requested one leaves
-// no lobe above the measuring threshold, so its neighbours merge. Returns {outward, inward}, or
-// {-1, -1} when a run lies between kInvisible and kVisible (then a count is not decidable).
-constexpr double kInvisible = 0.15;
-constexpr double kVisible = 0.6;
+// The amplitude applied around `arc` (fraction): linear between the enclosing knot points.
+double envelope(const std::vector<AppliedPeak>& peaks, double arc) {
+  const auto next = std::upper_bound(peaks.begin(), peaks.end(), arc,
+                                     [](double a, const AppliedPeak& p) { return a < p.arc; });
+  if (next == peaks.begin()) return peaks.front().amplitude_px;
+  if (next == peaks.end()) return peaks.back().amplitude_px;
+  const AppliedPeak& before = *(next - 1);
+  const double t = next->arc > before.arc ? (arc - before.arc) / (next->arc - before.arc) : 0.0;
+  return (1.0 - t) * before.amplitude_px + t * next->amplitude_px;
+}
 
-std::pair<int, int> expectedLobes(const std::vector<AppliedPeak>& peaks, double requested) {
+// The lobes the applied amplitudes should produce: runs of knot points of one sign (cyclic)
+// form one lobe; a run below kInvisiblePx leaves none, so its neighbours merge. Returns
+// {outward, inward}, or {-1, -1} when a run lies between kInvisiblePx and kVisiblePx.
+std::pair<int, int> expectedLobes(const std::vector<AppliedPeak>& peaks) {
   std::vector<std::pair<int, double>> runs;             // sign, largest amplitude
   for (std::size_t i = 0; i + 1 < peaks.size(); ++i) {  // the last repeats the first
     if (runs.empty() || runs.back().first != peaks[i].sign) runs.push_back({peaks[i].sign, 0.0});
@@ -59,9 +74,9 @@ std::pair<int, int> expectedLobes(const std::vector<AppliedPeak>& peaks, double 
   }
   std::vector<int> visible;
   for (const auto& run : runs) {
-    if (run.second >= kVisible * requested) {
+    if (run.second >= kVisiblePx) {
       visible.push_back(run.first);
-    } else if (run.second > kInvisible * requested) {
+    } else if (run.second >= kInvisiblePx) {
       return {-1, -1};
     }
   }
@@ -74,9 +89,13 @@ std::pair<int, int> expectedLobes(const std::vector<AppliedPeak>& peaks, double 
   return {outward, static_cast<int>(merged.size()) - outward};
 }
 
-bool inLobe(const Lobe& lobe, double arc) {
-  return lobe.arc_begin <= lobe.arc_end ? (arc >= lobe.arc_begin && arc <= lobe.arc_end)
-                                        : (arc >= lobe.arc_begin || arc <= lobe.arc_end);
+bool inLobe(const Lobe& lobe, double arc, double tolerance) {
+  const double begin = lobe.arc_begin - tolerance, end = lobe.arc_end + tolerance;
+  if (lobe.arc_begin > lobe.arc_end) return arc >= begin || arc <= end;  // over the start
+  for (double shifted : {arc, arc - 1.0, arc + 1.0}) {
+    if (shifted >= begin && shifted <= end) return true;
+  }
+  return false;
 }
 
 int crossings(const DiffusionCurveImage& image) {
@@ -85,51 +104,101 @@ int crossings(const DiffusionCurveImage& image) {
   return static_cast<int>(findCrossings(lines).size());
 }
 
-void checkContour(const Polyline& original, const Polyline& modified, const CurveWaveReport& report,
-                  const WaveSpec& spec, double px_per_mm, GlyphCheck& check) {
-  const double amplitude_px = spec.amplitude_mm * px_per_mm;
-  const std::vector<AppliedPeak> peaks = appliedPeaks(report, spec, px_per_mm);
-  const std::pair<int, int> expected_lobes = expectedLobes(peaks, amplitude_px);
-  const ContourMeasure measured = measureContour(original, modified, 0.25 * amplitude_px);
-  ++check.contours;
-  check.reduced_peaks += static_cast<int>(report.reductions.size());
-  if (expected_lobes.first < 0) {
-    ++check.flattened_contours;
-  } else {
-    ++check.count_checked;
-    check.count_ok +=
-        measured.outward == expected_lobes.first && measured.inward == expected_lobes.second;
-    check.contours_with_all_waves += expected_lobes.first == report.wave_count;
-  }
+std::string lobeText(const CurveWaveReport& report, const Lobe& lobe, double length_px) {
+  char text[160];
+  std::snprintf(text, sizeof text, "curve %d, %s lobe at arc %.1f-%.1f px (%.1f, %.1f)",
+                report.curve, lobe.sign > 0 ? "outward" : "inward", lobe.arc_begin * length_px,
+                lobe.arc_end * length_px, lobe.extreme_point.x(), lobe.extreme_point.y());
+  return text;
+}
+
+// Rates every lobe against the largest amplitude applied to its knot points of its sign.
+void rateLobes(const ContourMeasure& measured, const std::vector<AppliedPeak>& peaks,
+               const CurveWaveReport& report, double length_px, bool count_ok, GlyphCheck& check) {
   for (const Lobe& lobe : measured.lobes) {
     double expected = 0.0;
+    bool any = false, reduced = false;
     for (const AppliedPeak& peak : peaks) {
-      if (peak.sign == lobe.sign && inLobe(lobe, peak.arc_px)) {
-        expected = std::max(expected, peak.amplitude_px);
+      if (peak.sign != lobe.sign || !inLobe(lobe, peak.arc, kLobeEndTolerancePx / length_px)) {
+        continue;
       }
+      any = true;
+      reduced |= peak.reduced;
+      expected = std::max(expected, peak.amplitude_px);
+    }
+    char line[256];
+    if (!any) {
+      if (count_ok) continue;
+      std::snprintf(line, sizeof line, "%s without a knot point: measured %.2f px",
+                    lobeText(report, lobe, length_px).c_str(), lobe.extreme_px);
+      check.failures.push_back(line);
+      check.failure_points.push_back(lobe.extreme_point);
+      continue;
     }
     if (expected < kMinCheckedAmplitudePx) continue;
     const double error = std::abs(lobe.extreme_px - expected) / expected;
-    ++check.lobes_checked;
-    check.lobes_ok += error <= kAmplitudeTolerance;
-    if (error > kAmplitudeTolerance) {
-      char line[160];
-      std::snprintf(line, sizeof line,
-                    "curve %d, %s lobe at arc %.1f-%.1f px: expected %.2f px, measured %.2f px",
-                    report.curve, lobe.sign > 0 ? "outward" : "inward", lobe.arc_begin,
-                    lobe.arc_end, expected, lobe.extreme_px);
-      check.failures.push_back(line);
+    const bool ok = error <= kAmplitudeTolerance;
+    if (reduced) {
+      ++check.reduced_lobes;
+      check.reduced_lobes_ok += ok;
+      check.worst_reduced_error = std::max(check.worst_reduced_error, error);
+    } else {
+      ++check.full_lobes;
+      check.full_lobes_ok += ok;
+      check.worst_full_error = std::max(check.worst_full_error, error);
+      check.full_errors.push_back(error);
     }
-    check.worst_error = std::max(check.worst_error, error);
-    check.errors.push_back(error);
+    if (!ok) {
+      std::snprintf(line, sizeof line, "%s%s: expected %.2f px, measured %.2f px",
+                    lobeText(report, lobe, length_px).c_str(), reduced ? " (reduced)" : "",
+                    expected, lobe.extreme_px);
+      check.failures.push_back(line);
+      check.failure_points.push_back(lobe.extreme_point);
+    }
   }
+}
+
+void checkContour(const Polyline& original, const Polyline& modified, const CurveWaveReport& report,
+                  const WaveSpec& spec, double px_per_mm, GlyphCheck& check) {
+  const std::vector<AppliedPeak> peaks = appliedPeaks(report, spec, px_per_mm);
+  const double length_px = report.arc_length_mm * px_per_mm;
+  const ContourMeasure measured = measureContour(original, modified, [&peaks](double arc) {
+    return std::max(kMinLobeThresholdPx, kLobeThreshold * envelope(peaks, arc));
+  });
+  ++check.contours;
+  check.reduced_peaks += static_cast<int>(report.reductions.size());
+  for (const PeakReduction& r : report.reductions) check.crossing_peaks += r.reason == "crossing";
+  std::pair<int, int> expected{report.wave_count, report.wave_count};
+  if (report.reductions.empty()) {
+    ++check.unreduced_contours;
+  } else {
+    expected = expectedLobes(peaks);
+    if (expected.first < 0) {
+      ++check.reduced_undecidable;
+    } else {
+      ++check.reduced_decidable;
+    }
+  }
+  const bool decidable = expected.first >= 0;
+  const bool count_ok =
+      decidable && measured.outward == expected.first && measured.inward == expected.second;
+  if (count_ok) (report.reductions.empty() ? check.unreduced_count_ok : check.reduced_count_ok)++;
+  if (decidable && !count_ok) {
+    char line[224];
+    std::snprintf(line, sizeof line,
+                  "curve %d: %d outward + %d inward lobes, expected %d + %d (%d waves%s)",
+                  report.curve, measured.outward, measured.inward, expected.first, expected.second,
+                  report.wave_count, report.reductions.empty() ? "" : ", some knot points reduced");
+    check.failures.push_back(line);
+  }
+  rateLobes(measured, peaks, report, length_px, count_ok || !decidable, check);
 }
 
 }  // namespace
 
-double GlyphCheck::median_error() const {
-  if (errors.empty()) return 0.0;
-  std::vector<double> sorted = errors;
+double GlyphCheck::median_full_error() const {
+  if (full_errors.empty()) return 0.0;
+  std::vector<double> sorted = full_errors;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
   return sorted[sorted.size() / 2];
 }
@@ -149,17 +218,25 @@ GlyphCheck checkGlyph(const DiffusionCurveImage& original, const DiffusionCurveI
 
 void add(GlyphCheck& total, const GlyphCheck& part) {
   total.contours += part.contours;
-  total.count_checked += part.count_checked;
-  total.count_ok += part.count_ok;
-  total.contours_with_all_waves += part.contours_with_all_waves;
-  total.flattened_contours += part.flattened_contours;
-  total.lobes_checked += part.lobes_checked;
-  total.lobes_ok += part.lobes_ok;
+  total.unreduced_contours += part.unreduced_contours;
+  total.unreduced_count_ok += part.unreduced_count_ok;
+  total.reduced_decidable += part.reduced_decidable;
+  total.reduced_count_ok += part.reduced_count_ok;
+  total.reduced_undecidable += part.reduced_undecidable;
+  total.full_lobes += part.full_lobes;
+  total.full_lobes_ok += part.full_lobes_ok;
+  total.reduced_lobes += part.reduced_lobes;
+  total.reduced_lobes_ok += part.reduced_lobes_ok;
   total.reduced_peaks += part.reduced_peaks;
+  total.crossing_peaks += part.crossing_peaks;
   total.new_crossings += part.new_crossings;
-  total.worst_error = std::max(total.worst_error, part.worst_error);
-  total.errors.insert(total.errors.end(), part.errors.begin(), part.errors.end());
+  total.worst_full_error = std::max(total.worst_full_error, part.worst_full_error);
+  total.worst_reduced_error = std::max(total.worst_reduced_error, part.worst_reduced_error);
+  total.full_errors.insert(total.full_errors.end(), part.full_errors.begin(),
+                           part.full_errors.end());
   total.failures.insert(total.failures.end(), part.failures.begin(), part.failures.end());
+  total.failure_points.insert(total.failure_points.end(), part.failure_points.begin(),
+                              part.failure_points.end());
 }
 
 }  // namespace measure

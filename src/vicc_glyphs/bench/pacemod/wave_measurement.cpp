@@ -28,22 +28,26 @@ Nearest nearestOn(const Point2& p, const Polyline& line, const std::vector<doubl
 }  // namespace
 
 ContourMeasure measureContour(const Polyline& original, const Polyline& modified,
-                              double threshold_px) {
+                              const std::function<double(double arc_fraction)>& threshold) {
   std::vector<double> arcs{0.0};
   for (std::size_t i = 1; i < original.size(); ++i) {
     arcs.push_back(arcs.back() + (original[i] - original[i - 1]).norm());
   }
+  const double total = arcs.back();
+  for (double& arc : arcs) arc = total > 0.0 ? arc / total : 0.0;  // fractions of the length
   struct Sample {
     int sign;
     double magnitude;
     double arc;
+    Point2 point;
   };
   std::vector<Sample> samples;
   for (std::size_t i = 0; i + 1 < modified.size(); ++i) {  // the last repeats the first
     const Nearest n = nearestOn(modified[i], original, arcs);
+    const double arc = std::fmod(n.arc, 1.0);
     const int sign =
-        n.distance <= threshold_px ? 0 : (insidePolygon(modified[i], original) ? -1 : 1);
-    samples.push_back({sign, n.distance, n.arc});
+        n.distance <= threshold(arc) ? 0 : (insidePolygon(modified[i], original) ? -1 : 1);
+    samples.push_back({sign, n.distance, arc, modified[i]});
   }
   ContourMeasure result;
   // Start the cyclic scan at a sign change so that no lobe is split at the seam.
@@ -64,10 +68,13 @@ ContourMeasure measureContour(const Polyline& original, const Polyline& modified
     const Sample& s = samples[(offset + k) % samples.size()];
     if (s.sign == 0) continue;
     if (result.lobes.empty() || result.lobes.back().sign != s.sign) {
-      result.lobes.push_back({s.sign, 0.0, s.arc, s.arc});
+      result.lobes.push_back({s.sign, 0.0, s.arc, s.arc, s.point});
     }
     Lobe& lobe = result.lobes.back();
-    lobe.extreme_px = std::max(lobe.extreme_px, s.magnitude);
+    if (s.magnitude > lobe.extreme_px) {
+      lobe.extreme_px = s.magnitude;
+      lobe.extreme_point = s.point;
+    }
     lobe.arc_end = s.arc;
   }
   for (const Lobe& lobe : result.lobes) (lobe.sign > 0 ? result.outward : result.inward)++;

@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <set>
 
-#include "boundary_twins.hpp"
 #include "gradient_channels.hpp"
 #include "vicc_glyphs/io/format_error.hpp"
 #include "vicc_glyphs/io/orzan_xml.hpp"
@@ -190,9 +189,8 @@ void applyGradientEncodings(DiffusionCurveImage& image, const std::vector<Active
 
 }  // namespace
 
-namespace {
-
-DiffusionCurveImage importIcon(const GlyphDesign& design, int size) {
+DiffusionCurveImage loadIcon(const GlyphDesign& design, int size_px) {
+  const int size = size_px > 0 ? size_px : design.size_px;
   std::string extension = std::filesystem::path(design.icon_path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
   if (extension == ".svg") {
@@ -203,15 +201,6 @@ DiffusionCurveImage importIcon(const GlyphDesign& design, int size) {
   }
   if (extension == ".xml") return scaledToWidth(readOrzanXml(design.icon_path), size);
   throw FormatError(design.icon_path + ": design icons must be .svg or .xml (no raster import)");
-}
-
-}  // namespace
-
-DiffusionCurveImage loadIcon(const GlyphDesign& design, int size_px) {
-  DiffusionCurveImage icon = importIcon(design, size_px > 0 ? size_px : design.size_px);
-  // One curve per region boundary, so that a design's curve numbers name whole icon parts.
-  removeBoundaryTwins(icon);
-  return icon;
 }
 
 DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>& levels,

@@ -78,6 +78,26 @@ class CurveBuilder {
     }
   }
 
+  // A hole that one other colour region fills along its whole length is that region's outline
+  // again, reversed with the sides swapped: it adds no constraint, and a second curve along the
+  // same boundary would let an edit of one (a design's encoding, a PACEMOD wave) leave the
+  // other's colours and geometry behind. A hole with several colours across (or the
+  // background) is the only curve there and stays.
+  bool repeatsAnOutline(const Path& path) const {
+    if (ClipperLib::Orientation(path)) return false;  // an outer boundary
+    const int n = static_cast<int>(path.size());
+    int filler = -2;
+    for (int i = 0; i < n; ++i) {
+      // The region across an edge of the reversed path, as curve() sees it.
+      const IntPoint& a = path[(i + 1) % n];
+      const IntPoint& b = path[i];
+      const int across = regionAcross(a, b, frame_.toPixel(a), frame_.toPixel(b));
+      if (!isColorRegion(across) || (filler != -2 && across != filler)) return false;
+      filler = across;
+    }
+    return filler != -2;
+  }
+
   // Clipper's outer boundaries run clockwise on screen (y down) and holes anticlockwise: the
   // region lies on their right, so the reversed path has it on its left. The polygon is refit
   // with cubics between its breaks: corners and the vertices where the colour across changes.
@@ -149,24 +169,31 @@ class CurveBuilder {
     return all;
   }
 
+  bool isColorRegion(int region) const {
+    return region >= 0 && region < static_cast<int>(picture_.regions.size());
+  }
+
   const Color& colorOf(int region) const {
-    return region >= 0 && region < static_cast<int>(picture_.regions.size())
-               ? picture_.regions[region].color
-               : picture_.background.color;
+    return isColorRegion(region) ? picture_.regions[region].color : picture_.background.color;
+  }
+
+  Color colorAcross(const IntPoint& a, const IntPoint& b, const Point2& pa,
+                    const Point2& pb) const {
+    return colorOf(regionAcross(a, b, pa, pb));
   }
 
   // The neighbour owns the same edge in the opposite direction; where the two boundaries do
-  // not share vertices, a point just right of the edge's middle is located instead.
-  Color colorAcross(const IntPoint& a, const IntPoint& b, const Point2& pa,
-                    const Point2& pb) const {
+  // not share vertices, a point just right of the edge's middle is located instead. -1 or the
+  // background's index: no colour region.
+  int regionAcross(const IntPoint& a, const IntPoint& b, const Point2& pa, const Point2& pb) const {
     const auto shared = owner_.find({a, b});
-    if (shared != owner_.end()) return colorOf(shared->second);
+    if (shared != owner_.end()) return shared->second;
     const Point2 d = pb - pa;
     const double length = d.norm();
-    if (!(length > 0.0)) return picture_.background.color;
+    if (!(length > 0.0)) return -1;
     const double offset = std::max(4.0 / frame_.unitsPerPixel(), std::min(1e-3, 0.25 * length));
     const Point2 right_normal(-d.y() / length, d.x() / length);
-    return colorOf(locator_.locate(frame_.toInt(0.5 * (pa + pb) + offset * right_normal)));
+    return locator_.locate(frame_.toInt(0.5 * (pa + pb) + offset * right_normal));
   }
 
   const ResolvedPicture& picture_;
@@ -188,7 +215,7 @@ DiffusionCurveImage regionCurves(const ResolvedPicture& picture, const IntegerFr
   const double spacing = std::max(width, height) / 256.0;
   for (const ColorRegion& region : picture.regions) {
     for (const Path& path : region.area) {
-      if (path.size() >= 3)
+      if (path.size() >= 3 && !builder.repeatsAnOutline(path))
         image.curves.push_back(builder.curve(path, region.color, tolerance, spacing));
     }
   }

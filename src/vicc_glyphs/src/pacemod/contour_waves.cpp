@@ -1,47 +1,47 @@
 #include "vicc_glyphs/pacemod/contour_waves.hpp"
 
-#include <Eigen/Cholesky>
-#include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
-#include "vicc_glyphs/bspline/fitting.hpp"
+#include "offset_fit.hpp"
 #include "vicc_glyphs/bspline/frenet_frame.hpp"
-#include "vicc_glyphs/pacemod/polyline.hpp"
 #include "vicc_glyphs/pacemod/sparse_fowler_bartels.hpp"
+#include "wave_strips.hpp"
 
 namespace vicc_glyphs {
 namespace pacemod {
 namespace {
 
 using bspline::BSplineCurve;
+using detail::OffsetFrame;
+using detail::StripPiece;
 
-constexpr int kSamplesPerSpan = 8;
-constexpr int kCornerSteps = 8;
-constexpr double kCornerSnap = 0.2;
-constexpr double kCornerTolerance = 0.01;
-constexpr double kMaxCornerStretch = 2.0;
+// Arc lengths closer than this (px) are the same place: an icon corner on a wave's knot.
+constexpr double kSameArcLength = 1e-3;
+// A knot point moves onto an icon corner at most this fraction of the way to its neighbours.
+constexpr double kMaxMoveToCorner = 0.5;
+// Knots added where the smooth waveforms' fit leaves the contour by more than this (px).
+constexpr double kFitTolerance = 0.03;
+constexpr int kMaxRefinements = 4;
+constexpr int kRefinementProbes = 4;     // places checked per knot span
+constexpr double kMinRefinedSpan = 0.5;  // px: spans shorter than twice this stay
+// A knot point limited on an icon corner is reported when it keeps less than this of its
+// amplitude.
+constexpr double kCornerShortfall = 0.99;
 
-// The knot vector `knots` (clamped cubic over [0, L]) with the contour's own corners (its C0
-// joins) added as triple knots at their arc lengths, so that re-fitting keeps the icon's sharp
-// corners instead of rounding them over a knot span. A corner closer than kCornerSnap of a span
-// to an existing knot raises that knot to multiplicity 3 instead.
-std::vector<double> withContourCorners(std::vector<double> knots, const BSplineCurve& original,
-                                       const bspline::ArcLengthTable& table) {
+// The knot vector `knots` (clamped cubic over [0, L]) with the contour's corners added as
+// triple knots at their arc lengths (an existing knot at the same place is raised), so that
+// re-fitting keeps the icon's sharp corners where they are instead of rounding them.
+std::vector<double> withContourCorners(std::vector<double> knots,
+                                       const std::vector<ContourCorner>& corners) {
   const double end = knots.back();
-  for (double b : original.breakpoints()) {
-    if (b <= original.domainBegin() || b >= original.domainEnd() ||
-        original.multiplicity(b) < original.degree()) {
-      continue;
-    }
-    const double l = table.lengthAt(b);
-    const auto upper = std::upper_bound(knots.begin(), knots.end(), l);
-    const double after = upper == knots.end() ? end : *upper;
-    const double before = *(upper - 1);
-    const double span = after - before;
-    double at = l;
-    if (l - before < kCornerSnap * span) at = before;
-    if (after - l < kCornerSnap * span) at = after;
+  for (const ContourCorner& corner : corners) {
+    double at = corner.arc_length;
+    if (at <= 0.0 || at >= end) continue;
+    const auto upper = std::upper_bound(knots.begin(), knots.end(), at);
+    if (at - *(upper - 1) < kSameArcLength) at = *(upper - 1);
+    if (upper != knots.end() && *upper - at < kSameArcLength) at = *upper;
     if (at <= 0.0 || at >= end) continue;
     const int present = static_cast<int>(std::count(knots.begin(), knots.end(), at));
     knots.insert(std::upper_bound(knots.begin(), knots.end(), at), std::max(0, 3 - present), at);
@@ -49,198 +49,326 @@ std::vector<double> withContourCorners(std::vector<double> knots, const BSplineC
   return knots;
 }
 
-// Outward unit normal of the fit; at the closing point the mean of both ends' normals, so that
-// the first and the last knot point move to the same place and the contour stays closed.
-Point2 outwardNormal(const BSplineCurve& fit, double arc_length, double area) {
-  const double end = fit.domainEnd();
-  if (arc_length <= 0.0 || arc_length >= end) {
-    const Point2 mean =
-        bspline::inwardNormalAt(fit, 0.0, area) + bspline::inwardNormalAt(fit, end, area);
-    if (mean.norm() > 1e-9) return -mean.normalized();
-  }
-  return -bspline::inwardNormalAt(fit, arc_length, area);
+// The knot withContourCorners made for the icon corner at arc length l (it may have raised a
+// knot up to kSameArcLength away).
+double cornerKnot(const BSplineCurve& curve, double l) {
+  const auto at = std::lower_bound(curve.knots().begin(), curve.knots().end(), l - kSameArcLength);
+  return at != curve.knots().end() && *at <= l + kSameArcLength ? *at : l;
 }
 
-// Equal first derivatives at both ends of a closed contour: the mean of the fit's.
-std::vector<bspline::CurveConstraint> seamConstraints(const BSplineCurve& fit) {
+bool closesAtACorner(const ContourFrame& frame) {
+  return !frame.corners.empty() && frame.corners.front().arc_length == 0.0;
+}
+
+// Equal first derivatives at both ends of a contour that closes smoothly: the mean of the fit's.
+std::vector<bspline::CurveConstraint> seamConstraints(const ContourFrame& frame,
+                                                      const BSplineCurve& fit) {
+  if (closesAtACorner(frame)) return {};
   const Point2 mean =
       0.5 * (fit.derivativeAt(fit.domainBegin()) + fit.derivativeAt(fit.domainEnd()));
   return {{fit.domainBegin(), mean, 1}, {fit.domainEnd(), mean, 1}};
 }
 
-// What the strips between corners follow: the original contour offset along the normal by an
-// amount that changes linearly from one corner to the next.
-struct StripFrame {
-  const BSplineCurve& original;
-  const bspline::ArcLengthTable& table;
-  const BSplineCurve& fit;
-  double area;
+// Where knot point `i` goes: from `base` along the unit `direction` (sign included) by a
+// translation that puts it `growth` times as far from the contour, met at `parameter`.
+struct Placement {
+  double parameter = 0.0;
+  Point2 base = Point2::Zero();
+  Point2 direction = Point2::Zero();
+  double growth = 1.0;
+  int corner = -1;
 };
 
-constexpr int kStripSamples = 9;
-
-// Inner control points of the cubic strip points[first .. first+3] between arc lengths l0 and
-// l1: least squares (ends fixed) to the offset contour with offsets w0 -> w1. On a straight
-// contour this is the straight line with its points at a third and two thirds (Fig. 6.14B);
-// on a curved one the strip bends with the contour, so the wave keeps its amplitude.
-void fitStrip(std::vector<Point2>& points, int first, double l0, double l1, double w0, double w1,
-              const StripFrame& frame) {
-  const Point2 p0 = points[first], p3 = points[first + 3];
-  Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
-  Eigen::Matrix<double, 2, 2> rhs = Eigen::Matrix<double, 2, 2>::Zero();
-  for (int k = 1; k <= kStripSamples; ++k) {
-    const double t = static_cast<double>(k) / (kStripSamples + 1);
-    const double l = l0 + t * (l1 - l0);
-    const Point2 target = frame.original.pointAt(frame.table.parameterAt(l)) +
-                          ((1 - t) * w0 + t * w1) * outwardNormal(frame.fit, l, frame.area);
-    const double b0 = (1 - t) * (1 - t) * (1 - t), b1 = 3 * t * (1 - t) * (1 - t),
-                 b2 = 3 * t * t * (1 - t), b3 = t * t * t;
-    const Eigen::Vector2d basis(b1, b2);
-    normal += basis * basis.transpose();
-    rhs += basis * (target - b0 * p0 - b3 * p3).transpose();
+// The icon corner knot point `i` moves onto, or -1: a corner at the same place or, for the
+// waveforms whose knot points are free to move (not the rectangle's dense plateau and flank
+// points), one inside whose angle the offset of the knot point (by `amplitude`) would fall past
+// the bisector, within kMaxMoveToCorner of the way to the neighbouring knot points. The first
+// and the last knot point stay at the closing point.
+int cornerOfPeak(const ContourFrame& frame, std::size_t i, double amplitude) {
+  const std::vector<WavePeak>& peaks = frame.layout.peaks;
+  if (i == 0 || i + 1 == peaks.size()) return closesAtACorner(frame) ? 0 : -1;
+  const double l = peaks[i].arc_length;
+  const double room =
+      kMaxMoveToCorner * std::min(l - peaks[i - 1].arc_length, peaks[i + 1].arc_length - l);
+  const bool may_move = frame.layout.waveform != Waveform::Rectangle;
+  int best = -1;
+  double best_distance = 0.0;
+  for (std::size_t c = 0; c < frame.corners.size(); ++c) {
+    const ContourCorner& corner = frame.corners[c];
+    const double distance = std::abs(corner.arc_length - l);
+    const double reach =
+        may_move ? std::min(room, corner.swallowtail(peaks[i].sign * amplitude)) : 0.0;
+    if ((distance < kSameArcLength || distance < reach) && (best < 0 || distance < best_distance)) {
+      best = static_cast<int>(c);
+      best_distance = distance;
+    }
   }
-  const Eigen::Matrix2d inner = normal.ldlt().solve(rhs);
-  points[first + 1] = inner.row(0).transpose();
-  points[first + 2] = inner.row(1).transpose();
+  return best;
 }
 
-double signedOffset(const ContourWave& wave, std::size_t peak) {
-  return wave.layout.peaks[peak].sign * wave.translations[peak];
-}
-
-// Index of the layout peak at exactly `arc_length` (strip ends are knot points).
-std::size_t peakAt(const WaveLayout& layout, double arc_length) {
-  for (std::size_t i = 0; i < layout.peaks.size(); ++i) {
-    if (layout.peaks[i].arc_length == arc_length) return i;
+Placement placePeak(const ContourFrame& frame, const OffsetFrame& offsets, std::size_t i,
+                    double amplitude) {
+  const WavePeak& peak = frame.layout.peaks[i];
+  Placement placement;
+  placement.corner = cornerOfPeak(frame, i, amplitude);
+  if (placement.corner >= 0) {
+    const ContourCorner& corner = frame.corners[placement.corner];
+    placement.parameter =
+        i == 0 ? 0.0
+               : (i + 1 == frame.layout.peaks.size() ? frame.layout.length : corner.arc_length);
+    placement.base = corner.point;
+    placement.direction = peak.sign * corner.bisector;
+    // The strips follow a knot point inside the angle to its miter; the smooth waveforms'
+    // offset contour cannot reach it (the neighbours' offsets meet the bisector first), so
+    // there the thesis' half-space test decides how far it may go along the bisector.
+    const bool strips =
+        frame.layout.waveform == Waveform::Triangle || frame.layout.waveform == Waveform::Sawtooth;
+    placement.growth = strips ? 1.0 / corner.stretch(peak.sign * amplitude) : 1.0;
+    return placement;
   }
-  throw std::invalid_argument("peakAt: strip end is not a knot point");
-}
-
-void fitStrips(std::vector<Point2>& points, const BSplineCurve& curve, const ContourWave& wave,
-               const StripFrame& frame) {
-  for (const ArcInterval& span : wave.layout.straight_spans) {
-    // A corner of the icon inside the strip splits it; the fit already follows the contour there.
-    const int first = cornerControlIndex(curve, span.begin);
-    if (cornerControlIndex(curve, span.end) != first + 3) continue;
-    fitStrip(points, first, span.begin, span.end,
-             signedOffset(wave, peakAt(wave.layout, span.begin)),
-             signedOffset(wave, peakAt(wave.layout, span.end)), frame);
+  const double l = peak.arc_length, end = frame.layout.length;
+  Point2 normal = offsets.normal(l);
+  if (l <= 0.0 || l >= end) {  // a smooth closing point: both ends move the same way
+    const Point2 mean = offsets.normal(0.0) + offsets.normal(end);
+    if (mean.norm() > 1e-9) normal = mean.normalized();
   }
+  placement.parameter = l;
+  placement.base = offsets.original.pointAt(offsets.table.parameterAt(l));
+  placement.direction = peak.sign * normal;
+  return placement;
 }
 
-// How far to move `knot` along `direction` so that it ends `amplitude` away from its own
-// contour: `amplitude` itself, except next to a sharp convex corner of the icon, where the other
-// side of the corner comes closer than the knot point; there the translation grows (secant
-// steps, at most kMaxCornerStretch times the amplitude) until the distance is the amplitude.
-double translationForDistance(const Point2& knot, const Point2& direction, double amplitude,
-                              const Polyline& contour) {
-  if (!(amplitude > 0.0)) return 0.0;
-  double t = amplitude;
-  for (int step = 0; step < kCornerSteps; ++step) {
-    const double shortfall = amplitude - distanceToPolyline(knot + t * direction, contour);
-    if (shortfall < kCornerTolerance * amplitude) break;
-    t = std::min(t + shortfall, kMaxCornerStretch * amplitude);
+double appliedOffset(const ContourWave& wave, std::size_t i) {
+  return wave.layout.peaks[i].sign * wave.guarded[i].amplitude;
+}
+
+Point2 targetOf(const ContourWave& wave, std::size_t i) {
+  return wave.knot_points[i] + wave.translations[i] * wave.directions[i];
+}
+
+// The wave's signed offset at arc length l between its knot points: the sine's half cosine,
+// linear for the others.
+double waveOffsetAt(const ContourWave& wave, double l) {
+  const std::vector<double>& at = wave.parameters;
+  const std::size_t next = std::clamp<std::size_t>(
+      std::upper_bound(at.begin(), at.end(), l) - at.begin(), 1, at.size() - 1);
+  const double span = at[next] - at[next - 1];
+  double t = span > 0.0 ? std::clamp((l - at[next - 1]) / span, 0.0, 1.0) : 0.0;
+  if (wave.layout.waveform == Waveform::Sine) t = 0.5 - 0.5 * std::cos(M_PI * t);
+  return (1.0 - t) * appliedOffset(wave, next - 1) + t * appliedOffset(wave, next);
+}
+
+bool occupied(const ContourWave& wave, std::size_t corner) {
+  return std::find(wave.on_corner.begin(), wave.on_corner.end(), static_cast<int>(corner)) !=
+         wave.on_corner.end();
+}
+
+// Fowler-Bartels on `fit`: the curve meets every translated knot point and every icon corner
+// no knot point sits on its target (sine and rectangle).
+BSplineCurve meetTargets(const BSplineCurve& fit, const ContourFrame& frame,
+                         const ContourWave& wave, const std::vector<Point2>& corner_targets) {
+  std::vector<bspline::CurveConstraint> constraints = seamConstraints(frame, fit);
+  for (std::size_t i = 0; i < wave.parameters.size(); ++i) {
+    if (!wave.swallowed[i]) constraints.push_back({wave.parameters[i], targetOf(wave, i), 0});
   }
-  return t;
-}
-
-std::vector<Point2> targetsOf(const ContourWave& wave) {
-  std::vector<Point2> targets;
-  for (std::size_t i = 0; i < wave.knot_points.size(); ++i) {
-    targets.push_back(wave.knot_points[i] + wave.translations[i] * wave.directions[i]);
-  }
-  return targets;
-}
-
-// Translated knot points by Fowler-Bartels on `fit` (sine and rectangle).
-BSplineCurve translateKnotPoints(const BSplineCurve& fit, const ContourWave& wave) {
-  std::vector<bspline::CurveConstraint> constraints = seamConstraints(fit);
-  const std::vector<Point2> targets = targetsOf(wave);
-  for (std::size_t i = 0; i < targets.size(); ++i) {
-    constraints.push_back({wave.layout.peaks[i].arc_length, targets[i], 0});
+  for (std::size_t c = 0; c < frame.corners.size(); ++c) {
+    const ContourCorner& corner = frame.corners[c];
+    if (occupied(wave, c) || corner.arc_length <= 0.0) continue;
+    constraints.push_back({cornerKnot(fit, corner.arc_length), corner_targets[c], 0});
   }
   return sparseFowlerBartels(fit, constraints);
 }
 
-// Index of the layout peak nearest to `arc_length` (peaks are sorted by arc length).
-std::size_t nearestPeak(const WaveLayout& layout, double arc_length) {
-  const auto upper =
-      std::lower_bound(layout.peaks.begin(), layout.peaks.end(), arc_length,
-                       [](const WavePeak& peak, double l) { return peak.arc_length < l; });
-  if (upper == layout.peaks.begin()) return 0;
-  if (upper == layout.peaks.end()) return layout.peaks.size() - 1;
-  const std::size_t after = upper - layout.peaks.begin();
-  return arc_length - layout.peaks[after - 1].arc_length < upper->arc_length - arc_length
-             ? after - 1
-             : after;
-}
-
-// Rectangle: corner knots of multiplicity 3, every de Boor point first moved with
-// its nearest knot point along the normal at its Greville abscissa, so that the plateaus follow
-// the offset contour, then Fowler-Bartels meets the knot points exactly and the flanks become
-// strips (fitStrips).
-BSplineCurve rectangleWave(const BSplineCurve& original, const bspline::ArcLengthTable& table,
-                           const ContourFrame& frame, const ContourWave& wave) {
-  const BSplineCurve& fit = frame.frame_fit;
-  const double area = frame.area;
-  BSplineCurve raised = frame.rectangle_fit;
-  std::vector<Point2> points = raised.controlPoints();
-  const std::vector<double>& knots = raised.knots();
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const double greville = (knots[i + 1] + knots[i + 2] + knots[i + 3]) / 3.0;
-    const std::size_t peak = nearestPeak(wave.layout, greville);
-    points[i] +=
-        wave.translations[peak] * wave.layout.peaks[peak].sign * outwardNormal(fit, greville, area);
+// Inside each icon corner's angle (for the current offsets): how far along the side before and
+// after it the offset contour is swallowed; {0, 0} outside the angle.
+std::vector<std::pair<double, double>> swallowedStretches(const ContourFrame& frame,
+                                                          const detail::OffsetFit::Offset& offset) {
+  std::vector<std::pair<double, double>> stretches(frame.corners.size(), {0.0, 0.0});
+  for (std::size_t c = 0; c < frame.corners.size(); ++c) {
+    if (!frame.corners[c].inside(offset(frame.corners[c].arc_length))) continue;
+    const int i = static_cast<int>(c);
+    stretches[c] = {frame.offset_fit->meetingDistance(i, -1, offset),
+                    frame.offset_fit->meetingDistance(i, 1, offset)};
   }
-  raised.setControlPoints(points);
-  BSplineCurve moved = translateKnotPoints(raised, wave);
-  points = moved.controlPoints();
-  fitStrips(points, moved, wave, {original, table, fit, area});
-  moved.setControlPoints(std::move(points));
-  return moved;
+  return stretches;
 }
 
-// Triangle and sawtooth: straight strips between the translated corners.
-BSplineCurve stripWave(const ContourWave& wave, const StripFrame& frame) {
-  const std::vector<Point2> corners = targetsOf(wave);
-  std::vector<Point2> points{corners.front()};
-  for (std::size_t i = 1; i < corners.size(); ++i) points.insert(points.end(), 3, corners[i]);
-  BSplineCurve curve(3, knotVector(wave.layout), points);
-  fitStrips(points, curve, wave, frame);
+// The inner icon corner whose offset contour swallows knot point i (its base lies within the
+// stretch of a side whose offset falls past the corner's bisector), or -1. Corners are sorted
+// by arc length; only the two around the knot point can swallow it.
+int swallowingCorner(const ContourFrame& frame, const ContourWave& wave, std::size_t i,
+                     const std::vector<std::pair<double, double>>& stretches) {
+  if (frame.corners.empty()) return -1;
+  const double end = wave.layout.length, l = wave.parameters[i];
+  const auto next = std::upper_bound(
+      frame.corners.begin(), frame.corners.end(), l,
+      [](double value, const ContourCorner& corner) { return value < corner.arc_length; });
+  const std::size_t after = (next - frame.corners.begin()) % frame.corners.size();
+  const std::size_t before = (after + frame.corners.size() - 1) % frame.corners.size();
+  for (std::size_t c : {before, after}) {
+    const ContourCorner& corner = frame.corners[c];
+    if (!corner.inside(appliedOffset(wave, i))) continue;
+    double d = l - corner.arc_length;
+    if (d > 0.5 * end) d -= end;  // the closing corner lies at 0 and at L
+    if (d < -0.5 * end) d += end;
+    if (std::abs(d) < (d < 0.0 ? stretches[c].first : stretches[c].second)) {
+      return static_cast<int>(c);
+    }
+  }
+  return -1;
+}
+
+// Sine and rectangle: inside an icon corner's angle the offset contour of the sides (each by
+// its own offset) ends where they meet the bisector. A knot point on the corner goes only that
+// far along the bisector; one whose offset would fall past the bisector is left to the offset
+// fit (no constraint of its own). Either gets the distance of the meeting point; where that is
+// less than its amplitude it is reported ("corner"). Twice, as the meeting point moves with the
+// knot points' own amplitudes.
+void limitOnCorners(const ContourFrame& frame, ContourWave& wave) {
+  const detail::OffsetFit::Offset offset = [&wave](double l) { return waveOffsetAt(wave, l); };
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::vector<Point2> targets = frame.offset_fit->cornerTargets(offset);
+    const std::vector<std::pair<double, double>> stretches = swallowedStretches(frame, offset);
+    for (std::size_t i = 0; i + 1 < wave.parameters.size(); ++i) {
+      int c = wave.on_corner[i];
+      if (c < 0) {
+        c = swallowingCorner(frame, wave, i, stretches);
+        if (c < 0) continue;
+        wave.swallowed[i] = true;
+      } else if (!frame.corners[c].inside(appliedOffset(wave, i))) {
+        continue;
+      }
+      const ContourCorner& corner = frame.corners[c];
+      const double along = std::max(
+          0.0, wave.layout.peaks[i].sign * (targets[c] - corner.point).dot(corner.bisector));
+      const double distance = along * corner.half_turn_cosine;
+      if (wave.swallowed[i]) {
+        wave.translations[i] = 0.0;  // no constraint: the fit's offset contour decides
+      } else if (distance < wave.guarded[i].amplitude) {
+        wave.translations[i] = along;
+      }
+      if (distance < kCornerShortfall * wave.guarded[i].amplitude) {
+        wave.guarded[i].amplitude = distance;
+        wave.cornered[i] = !wave.capped[i] && !wave.guarded[i].reduced;
+      }
+    }
+    // The closing knot point repeats the first.
+    wave.guarded.back() = wave.guarded.front();
+    wave.translations.back() = wave.translations.front();
+    wave.cornered.back() = wave.cornered.front();
+    wave.swallowed.back() = wave.swallowed.front();
+  }
+}
+
+// Index of the layout peak at arc length `l` (a flank's end).
+std::size_t peakAt(const WaveLayout& layout, double l) {
+  const auto at =
+      std::lower_bound(layout.peaks.begin(), layout.peaks.end(), l,
+                       [](const WavePeak& peak, double value) { return peak.arc_length < value; });
+  return std::min<std::size_t>(at - layout.peaks.begin(), layout.peaks.size() - 1);
+}
+
+// Sine and rectangle: the offset fit of the wave's profile, then Fowler-Bartels for the knot
+// points and the icon's corners; the rectangle's flanks become strips.
+BSplineCurve smoothWave(const ContourFrame& frame, const OffsetFrame& offsets,
+                        const ContourWave& wave) {
+  const detail::OffsetFit::Offset offset = [&wave](double l) { return waveOffsetAt(wave, l); };
+  const std::vector<Point2> corner_targets = frame.offset_fit->cornerTargets(offset);
+  BSplineCurve curve =
+      meetTargets(frame.offset_fit->fit(offset, corner_targets), frame, wave, corner_targets);
+  if (wave.layout.straight_spans.empty()) return curve;
+  std::vector<Point2> points = curve.controlPoints();
+  for (const ArcInterval& span : wave.layout.straight_spans) {
+    // An icon corner inside the flank splits it; the fit already follows the contour there.
+    const int first = cornerControlIndex(curve, span.begin);
+    if (cornerControlIndex(curve, span.end) != first + 3) continue;
+    detail::fitStrip(points, first,
+                     {span.begin, span.end, appliedOffset(wave, peakAt(wave.layout, span.begin)),
+                      appliedOffset(wave, peakAt(wave.layout, span.end))},
+                     offsets);
+  }
   curve.setControlPoints(std::move(points));
   return curve;
 }
 
-}  // namespace
-
-BSplineCurve fitOnArcLength(const BSplineCurve& original, const bspline::ArcLengthTable& table,
-                            const std::vector<double>& knots) {
-  std::vector<double> lengths;
-  for (std::size_t i = 3; i + 4 < knots.size(); ++i) {
-    if (knots[i + 1] <= knots[i]) continue;
-    for (int k = 0; k < kSamplesPerSpan; ++k) {
-      lengths.push_back(knots[i] + (knots[i + 1] - knots[i]) * k / kSamplesPerSpan);
+// Triangle and sawtooth: straight strips between the translated corners. An icon corner inside
+// a strip splits it at its offset point (the strip's offset interpolated there), so that the
+// wave keeps its distance around the corner instead of cutting it with one cubic.
+BSplineCurve stripWave(const ContourFrame& frame, const OffsetFrame& offsets,
+                       const ContourWave& wave) {
+  struct Break {
+    double arc_length;
+    double offset;
+    Point2 point;
+    const ContourCorner* corner;
+  };
+  std::vector<Break> breaks;
+  const std::size_t count = wave.parameters.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const ContourCorner* own = wave.on_corner[i] >= 0 ? &frame.corners[wave.on_corner[i]] : nullptr;
+    breaks.push_back({wave.parameters[i], appliedOffset(wave, i), targetOf(wave, i), own});
+    if (i + 1 == count) break;
+    const double l0 = wave.parameters[i], l1 = wave.parameters[i + 1];
+    for (std::size_t c = 0; c < frame.corners.size(); ++c) {
+      const ContourCorner& corner = frame.corners[c];
+      if (occupied(wave, c) || corner.arc_length <= l0 + kSameArcLength ||
+          corner.arc_length >= l1 - kSameArcLength) {
+        continue;
+      }
+      const double w = waveOffsetAt(wave, corner.arc_length);
+      breaks.push_back({corner.arc_length, w, corner.offsetPoint(w), &corner});
     }
   }
-  lengths.push_back(knots.back());
-  // Normal equations with the banded N^T N (sparse Cholesky): the least-squares minimiser
-  // that ELSPIA converges to (omega = 0), solved directly; far faster than sparse QR here.
-  Eigen::MatrixX2d points(lengths.size(), 2);
-  for (std::size_t i = 0; i < lengths.size(); ++i) {
-    points.row(i) = original.pointAt(table.parameterAt(lengths[i])).transpose();
+  std::vector<double> knots(4, 0.0);
+  std::vector<Point2> points{breaks.front().point};
+  for (std::size_t k = 1; k < breaks.size(); ++k) {
+    if (k + 1 < breaks.size()) knots.insert(knots.end(), 3, breaks[k].arc_length);
+    points.insert(points.end(), 3, breaks[k].point);
   }
-  const BSplineCurve basis(3, knots, std::vector<Point2>(knots.size() - 4, Point2::Zero()));
-  const Eigen::SparseMatrix<double> n = bspline::collocationMatrix(basis, lengths);
-  const Eigen::SparseMatrix<double> normal = n.transpose() * n;
-  const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> solver(normal);
-  if (solver.info() != Eigen::Success) {
-    throw std::invalid_argument("fitOnArcLength: the knot spans are not all covered by samples");
+  knots.insert(knots.end(), 4, wave.layout.length);
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+    detail::fitStrip(points, static_cast<int>(3 * k),
+                     {breaks[k].arc_length, breaks[k + 1].arc_length, breaks[k].offset,
+                      breaks[k + 1].offset, breaks[k].corner, breaks[k + 1].corner},
+                     offsets);
   }
-  const Eigen::MatrixX2d control = solver.solve(n.transpose() * points);
-  std::vector<Point2> control_points(control.rows());
-  for (int i = 0; i < control.rows(); ++i) control_points[i] = control.row(i).transpose();
-  return BSplineCurve(3, knots, std::move(control_points));
+  return BSplineCurve(3, std::move(knots), std::move(points));
 }
+
+// The offset fit on the waveform's knots (and the icon's corners) with knots added in the
+// middle of every span where the fit of the contour itself (offset 0) is further than
+// kFitTolerance from it, a few times: where the contour has detail finer than a quarter period
+// the waveform's knots alone would round it off by up to a few tenths of a pixel, as much as a
+// small amplitude (thesis 6.2.3.3: further knots where the B-spline lacks degrees of freedom).
+std::shared_ptr<const detail::OffsetFit> adaptedFit(const BSplineCurve& original,
+                                                    const bspline::ArcLengthTable& table,
+                                                    const ContourFrame& frame) {
+  std::vector<double> knots = withContourCorners(knotVector(frame.layout), frame.corners);
+  auto fit = std::make_shared<detail::OffsetFit>(original, table, knots, frame.corners, frame.area);
+  const auto zero = [](double) { return 0.0; };
+  for (int round = 0; round < kMaxRefinements; ++round) {
+    const BSplineCurve curve = fit->fit(zero, fit->cornerTargets(zero));
+    std::vector<double> added;
+    for (std::size_t i = 3; i + 4 < knots.size(); ++i) {
+      const double a = knots[i], b = knots[i + 1];
+      if (b - a < 2.0 * kMinRefinedSpan) continue;
+      for (int k = 1; k < kRefinementProbes; ++k) {
+        const double l = a + (b - a) * k / kRefinementProbes;
+        if ((curve.pointAt(l) - original.pointAt(table.parameterAt(l))).norm() > kFitTolerance) {
+          added.push_back(0.5 * (a + b));
+          break;
+        }
+      }
+    }
+    if (added.empty()) break;
+    knots.insert(knots.end(), added.begin(), added.end());
+    std::sort(knots.begin(), knots.end());
+    fit = std::make_shared<detail::OffsetFit>(original, table, knots, frame.corners, frame.area);
+  }
+  return fit;
+}
+
+}  // namespace
 
 int cornerControlIndex(const BSplineCurve& curve, double knot) {
   const std::vector<double>& knots = curve.knots();
@@ -256,74 +384,62 @@ int cornerControlIndex(const BSplineCurve& curve, double knot) {
 ContourFrame contourFrame(const BSplineCurve& original, const bspline::ArcLengthTable& table,
                           Waveform waveform, int wave_count) {
   if (!original.isClosed(1e-6)) throw std::invalid_argument("modifyContour: contour is not closed");
-  ContourFrame frame{waveLayout(waveform, wave_count, table.totalLength()), original, 0.0,
-                     original};
-  // The smooth fit with single knots every quarter period (the sine's layout) is the sine's base
-  // and gives every waveform its normals: the least-squares ringing next to the icon's own
-  // corners dies out within a few such short spans, whereas the half-period spans of the sharp
-  // layouts would carry it far along the contour.
-  frame.frame_fit = fitOnArcLength(
-      original, table,
-      withContourCorners(knotVector(waveLayout(Waveform::Sine, wave_count, table.totalLength())),
-                         original, table));
-  frame.area = bspline::signedArea(frame.frame_fit);
-  if (waveform == Waveform::Rectangle) {
-    // Fitting on the final knot vector gives the same curve space as raising the corner knots of
-    // the smooth fit by knot insertion, without Boehm's O(n) copy per inserted knot.
-    frame.rectangle_fit = fitOnArcLength(
-        original, table, withContourCorners(knotVector(frame.layout), original, table));
+  ContourFrame frame{waveLayout(waveform, wave_count, table.totalLength()),
+                     bspline::signedArea(original),
+                     {},
+                     nullptr};
+  frame.corners = contourCorners(original, table, frame.area);
+  if (waveform == Waveform::Sine || waveform == Waveform::Rectangle) {
+    frame.offset_fit = adaptedFit(original, table, frame);
   }
   return frame;
 }
 
 ContourWave modifyContour(const ContourFrame& frame, const BSplineCurve& original,
                           const bspline::ArcLengthTable& table, double amplitude,
-                          const SkeletonGuard* guard, const std::vector<double>& caps,
-                          bool stretch_at_corners) {
-  ContourWave wave{original, frame.layout, {}, {}, {}, {}, {}};
-  const BSplineCurve& frame_fit = frame.frame_fit;
-  const double area = frame.area;
-  Polyline contour_line;
-  if (stretch_at_corners) {
-    for (double u : table.parameters()) contour_line.push_back(original.pointAt(u));
-  }
-  for (const WavePeak& peak : wave.layout.peaks) {
-    const bool closing = peak.arc_length >= wave.layout.length;
+                          const SkeletonGuard* guard, const std::vector<double>& caps) {
+  ContourWave wave{original, frame.layout, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+  const OffsetFrame offsets{original, table, frame.area};
+  const std::size_t count = wave.layout.peaks.size();
+  for (std::size_t i = 0; i < count; ++i) {
     // The closing point repeats the first: same point, direction and amplitude.
-    if (closing && !wave.knot_points.empty()) {
+    if (i + 1 == count && i > 0) {
+      wave.parameters.push_back(wave.layout.length);
+      wave.on_corner.push_back(wave.on_corner.front());
       wave.knot_points.push_back(wave.knot_points.front());
       wave.directions.push_back(wave.directions.front());
       wave.guarded.push_back(wave.guarded.front());
       wave.capped.push_back(wave.capped.front());
+      wave.cornered.push_back(false);
+      wave.swallowed.push_back(false);
       wave.translations.push_back(wave.translations.front());
       continue;
     }
-    const Point2 knot = original.pointAt(table.parameterAt(peak.arc_length));
-    const Point2 direction = peak.sign * outwardNormal(frame_fit, peak.arc_length, area);
-    wave.knot_points.push_back(knot);
-    wave.directions.push_back(direction);
-    GuardResult allowed = guard ? guard->limit(knot, direction, amplitude)
-                                : GuardResult{std::max(amplitude, 0.0), false, 0};
-    const std::size_t i = wave.guarded.size();
+    const Placement placement = placePeak(frame, offsets, i, amplitude);
+    GuardResult allowed =
+        guard ? guard->limit(placement.base, placement.direction, amplitude, placement.growth)
+              : GuardResult{std::max(amplitude, 0.0), false, 0};
     const bool capped = i < caps.size() && caps[i] < allowed.amplitude;
     if (capped) allowed.amplitude = std::max(caps[i], 0.0);
+    wave.parameters.push_back(placement.parameter);
+    wave.on_corner.push_back(placement.corner);
+    wave.knot_points.push_back(placement.base);
+    wave.directions.push_back(placement.direction);
     wave.guarded.push_back(allowed);
     wave.capped.push_back(capped);
-    wave.translations.push_back(
-        stretch_at_corners
-            ? translationForDistance(knot, direction, allowed.amplitude, contour_line)
-            : allowed.amplitude);
+    wave.cornered.push_back(false);
+    wave.swallowed.push_back(false);
+    wave.translations.push_back(allowed.amplitude / placement.growth);
   }
+  if (frame.offset_fit) limitOnCorners(frame, wave);
   switch (wave.layout.waveform) {
     case Waveform::Sine:
-      wave.curve = translateKnotPoints(frame_fit, wave);
-      break;
     case Waveform::Rectangle:
-      wave.curve = rectangleWave(original, table, frame, wave);
+      wave.curve = smoothWave(frame, offsets, wave);
       break;
     case Waveform::Triangle:
     case Waveform::Sawtooth:
-      wave.curve = stripWave(wave, {original, table, frame_fit, area});
+      wave.curve = stripWave(frame, offsets, wave);
       break;
   }
   return wave;
@@ -331,10 +447,9 @@ ContourWave modifyContour(const ContourFrame& frame, const BSplineCurve& origina
 
 ContourWave modifyContour(const BSplineCurve& original, const bspline::ArcLengthTable& table,
                           Waveform waveform, int wave_count, double amplitude,
-                          const SkeletonGuard* guard, const std::vector<double>& caps,
-                          bool stretch_at_corners) {
+                          const SkeletonGuard* guard, const std::vector<double>& caps) {
   return modifyContour(contourFrame(original, table, waveform, wave_count), original, table,
-                       amplitude, guard, caps, stretch_at_corners);
+                       amplitude, guard, caps);
 }
 
 }  // namespace pacemod

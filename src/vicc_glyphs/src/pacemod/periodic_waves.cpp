@@ -17,6 +17,7 @@ namespace pacemod {
 namespace {
 
 constexpr double kMinQuarterPeriodPx = 0.5;
+constexpr double kNoCap = 1e300;
 constexpr int kSamplesPerSpan = 16;  // as dense as the bench's polygon check
 // Bucket size of the crossing search, px: high-frequency waves put hundreds of their dense
 // samples into an 8 px cell, and each bucket's pairs are tested.
@@ -36,7 +37,6 @@ struct Context {
   const WaveSpec& spec;
   double px_per_mm;
   const SkeletonGuard* guard;
-  bool stretch_at_corners;
 };
 
 void checkArguments(const DiffusionCurveImage& image, const std::vector<int>& curves,
@@ -61,14 +61,9 @@ void build(WavedContour& contour, const Context& context) {
   }
   contour.wave = std::make_unique<ContourWave>(
       modifyContour(*contour.frame, contour.spline.geometry, *contour.table,
-                    context.spec.amplitude_mm * context.px_per_mm, context.guard, contour.caps,
-                    context.stretch_at_corners));
-  if (contour.caps.empty()) {
-    contour.caps.assign(contour.wave->guarded.size(), 1e300);
-    for (std::size_t i = 0; i < contour.caps.size(); ++i) {
-      contour.caps[i] = contour.wave->guarded[i].amplitude;
-    }
-  }
+                    context.spec.amplitude_mm * context.px_per_mm, context.guard, contour.caps));
+  // No cap until the polygon check sets one (capAround halves the amplitude applied).
+  if (contour.caps.empty()) contour.caps.assign(contour.wave->guarded.size(), kNoCap);
 }
 
 // Null when the curve stays unchanged (the report says why).
@@ -190,8 +185,8 @@ void finishReport(const WavedContour& contour, const Polyline& original, double 
   const ContourWave& wave = *contour.wave;
   double sum = 0.0, low = 1e300, high = 0.0;
   const PolylineDistance distance(original);
-  for (const WavePeak& peak : wave.layout.peaks) {
-    const double d = distance(wave.curve.pointAt(peak.arc_length)) / px_per_mm;
+  for (double parameter : wave.parameters) {
+    const double d = distance(wave.curve.pointAt(parameter)) / px_per_mm;
     sum += d;
     low = std::min(low, d);
     high = std::max(high, d);
@@ -201,10 +196,10 @@ void finishReport(const WavedContour& contour, const Polyline& original, double 
   report.realised_amplitude_mean_mm = sum / wave.layout.peaks.size();
   report.realised_amplitude_max_mm = high;
   for (std::size_t i = 0; i + 1 < wave.guarded.size(); ++i) {  // the last repeats the first
-    if (wave.guarded[i].reduced || wave.capped[i]) {
-      report.reductions.push_back({wave.layout.peaks[i].arc_length / px_per_mm,
-                                   wave.guarded[i].amplitude / px_per_mm,
-                                   wave.capped[i] ? "crossing" : "skeleton"});
+    if (wave.guarded[i].reduced || wave.capped[i] || wave.cornered[i]) {
+      report.reductions.push_back(
+          {wave.layout.peaks[i].arc_length / px_per_mm, wave.guarded[i].amplitude / px_per_mm,
+           wave.capped[i] ? "crossing" : (wave.guarded[i].reduced ? "skeleton" : "corner")});
     }
   }
 }
@@ -243,7 +238,7 @@ std::vector<CurveWaveReport> applyWaves(DiffusionCurveImage& image,
                                             options.field_grid_scale, options.feature_transform);
     guard = std::make_unique<SkeletonGuard>(*field, options.skeleton_offset_mm * px_per_mm);
   }
-  const Context context{spec, px_per_mm, guard.get(), options.stretch_at_corners};
+  const Context context{spec, px_per_mm, guard.get()};
   std::vector<CurveWaveReport> reports(curves.size());
   std::map<int, std::unique_ptr<WavedContour>> waved;
   for (std::size_t k = 0; k < curves.size(); ++k) {

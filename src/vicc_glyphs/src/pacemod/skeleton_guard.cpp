@@ -16,18 +16,30 @@ double skeletonAmplitude(const Point2& knot, const Point2& direction, const Poin
   return 0.5 * base.squaredNorm() / along;
 }
 
+double skeletonTranslation(const Point2& knot, const Point2& direction, const Point2& other,
+                           double growth) {
+  if (growth >= 1.0) return skeletonAmplitude(knot, direction, other);
+  // |b - t n|^2 = g^2 t^2 with b = p - k: (1 - g^2) t^2 - 2 <n, b> t + |b|^2 = 0.
+  const Point2 base = other - knot;
+  const double along = direction.dot(base);
+  const double a = 1.0 - growth * growth, c = base.squaredNorm();
+  const double discriminant = along * along - a * c;
+  if (!(along > 0.0) || discriminant < 0.0) return std::numeric_limits<double>::infinity();
+  return (along - std::sqrt(discriminant)) / a;
+}
+
 SkeletonGuard::SkeletonGuard(const NearestCurvePoint& field, double epsilon)
     : field_(field), epsilon_(epsilon) {}
 
-GuardResult SkeletonGuard::limit(const Point2& knot, const Point2& direction,
-                                 double requested) const {
+GuardResult SkeletonGuard::limit(const Point2& knot, const Point2& direction, double requested,
+                                 double growth) const {
   GuardResult result{std::max(requested, 0.0), false, 0};
   const double tolerance = field_.gridPixel();
   while (result.amplitude > 0.0 && result.steps < kMaxGuardSteps) {
-    const Point2 moved = knot + result.amplitude * direction;
+    const Point2 moved = knot + (result.amplitude / growth) * direction;
     const Point2 other = field_.nearest(moved);
     if ((moved - other).norm() >= result.amplitude - tolerance) break;
-    const double skeleton = skeletonAmplitude(knot, direction, other);
+    const double skeleton = growth * skeletonTranslation(knot, direction, other, growth);
     if (!std::isfinite(skeleton)) break;
     result.amplitude = std::clamp(skeleton - epsilon_, 0.0, result.amplitude);
     result.reduced = true;

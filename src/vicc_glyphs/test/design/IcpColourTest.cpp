@@ -83,11 +83,19 @@ ColourCount countColours(double pressure, int category) {
 
 TEST(IcpColour, IconHasOneCurvePerPartAndCurveOneEnclosesTheBrain) {
   const DiffusionCurveImage icon = loadIcon(shipped("intracranial_pressure"), kSize);
-  ASSERT_EQ(icon.curves.size(), 2u);  // head, brain: the head's hole copy of the brain is gone
+  ASSERT_EQ(icon.curves.size(), 2u);  // head, brain
   const DiffusionCurve& brain = icon.curves[1];
   const bool inside_is_left = pacemod::polylineArea(pacemod::sampleCurve(brain, 8)) < 0.0;
   const Color inside = inside_is_left ? brain.leftColorAt(0.5) : brain.rightColorAt(0.5);
   EXPECT_LT((inside - kIconPink).norm(), 1e-3);
+}
+
+// The SVG import makes one curve per region boundary (the head's hole is the brain's outline),
+// so curve numbers name whole icon parts at every size.
+TEST(IcpColour, HeadBrainIconHasTwoCurvesAtEverySize) {
+  for (int size : {32, 48, 160, 512}) {
+    EXPECT_EQ(loadIcon(shipped("intracranial_pressure"), size).curves.size(), 2u) << size;
+  }
 }
 
 TEST(IcpColour, EachCategoryPaintsTheWholeBrainAndNoPinkRemains) {

@@ -144,13 +144,13 @@ TEST(SvgImport, ColouredShapesGetTheirFillAndTheColourAround) {
   const DiffusionCurveImage image = importSvg(kTestData + "coloured_shapes.svg");
   EXPECT_EQ(image.width, 100);
   EXPECT_EQ(image.height, 80);
-  // The red square with the disc's hole in it (2 curves), the disc, the triangle; the
-  // fill="none" square adds nothing.
-  ASSERT_EQ(image.curves.size(), 4u);
+  // The red square, the disc, the triangle: the square's hole, which the disc fills, is the
+  // disc's outline and makes no curve of its own; the fill="none" square adds nothing.
+  ASSERT_EQ(image.curves.size(), 3u);
   const auto red = curvesWithLeft(image, Color(1, 0, 0));
   const auto blue = curvesWithLeft(image, Color(0, 0, 1));
   const auto green = curvesWithLeft(image, Color(0, 1, 0));
-  ASSERT_EQ(red.size(), 2u);
+  ASSERT_EQ(red.size(), 1u);
   ASSERT_EQ(blue.size(), 1u);
   ASSERT_EQ(green.size(), 1u);
   // The blue disc lies on the red square: red is its outside colour.
@@ -164,6 +164,38 @@ TEST(SvgImport, ColouredShapesGetTheirFillAndTheColourAround) {
   for (std::size_t k = 0; k < blue[0]->control_points.size(); k += 3) {
     EXPECT_NEAR((blue[0]->control_points[k] - Point2(30, 30)).norm(), 10.0, 0.01);  // on the circle
   }
+}
+
+DiffusionCurveImage importedSquares(const std::string& shapes) {
+  SvgImportOptions options;
+  options.size = 64;
+  return parseSvg(
+      "<svg xmlns='http://www.w3.org/2000/svg' viewBox='0 0 20 20'>" + shapes + "</svg>", options);
+}
+
+// One curve per boundary: the hole a region leaves in another is not repeated when one
+// region fills it (the inner outline carries both colours), and kept when several do.
+TEST(SvgImport, AHoleFilledByOneRegionIsItsOutlineOnly) {
+  const DiffusionCurveImage image = importedSquares(
+      "<rect x='2' y='2' width='16' height='16' fill='#808080'/>"
+      "<rect x='6' y='6' width='8' height='8' fill='#ff0000'/>");
+  ASSERT_EQ(image.curves.size(), 2u);  // grey outline, red outline
+  const Color grey = Color(0x80, 0x80, 0x80) / 255.0;
+  const auto red = curvesWithLeft(image, Color(1, 0, 0));
+  ASSERT_EQ(red.size(), 1u);
+  EXPECT_LT((red[0]->leftColorAt(0.5) - Color(1, 0, 0)).norm(), 1e-3);
+  EXPECT_LT((red[0]->rightColorAt(0.5) - grey).norm(), 1e-3);
+  ASSERT_EQ(curvesWithLeft(image, grey).size(), 1u);
+  EXPECT_LT((curvesWithLeft(image, grey)[0]->rightColorAt(0.5) - Color(1, 1, 1)).norm(), 1e-3);
+}
+
+TEST(SvgImport, AHoleWithSeveralColoursAcrossIsKept) {
+  const DiffusionCurveImage image = importedSquares(
+      "<rect x='2' y='2' width='16' height='16' fill='#808080'/>"
+      "<rect x='6' y='6' width='4' height='8' fill='#ff0000'/>"
+      "<rect x='10' y='6' width='4' height='8' fill='#0000ff'/>");
+  ASSERT_EQ(image.curves.size(), 4u);  // grey outline and hole, red, blue
+  ASSERT_EQ(curvesWithLeft(image, Color(0x80, 0x80, 0x80) / 255.0).size(), 2u);
 }
 
 TEST(SvgImport, TransformsNestAndApplyInOrder) {

@@ -12,8 +12,8 @@
 
 namespace vicc_glyphs::design {
 
-/// The design's icon at `size_px` width (0: the design's size_px), each boundary between two
-/// regions as one curve (a hole's copy of an inner outline is dropped). Throws FormatError.
+/// The design's icon at `size_px` width (0: the design's size_px); an SVG icon has one curve per
+/// region boundary (the SVG import's rule), so curve numbers name icon parts. Throws FormatError.
 DiffusionCurveImage loadIcon(const GlyphDesign& design, int size_px);
 
 /// The modified image for `levels` (one per variable, as GlyphDesign::levelsFor returns).

@@ -1,24 +1,31 @@
 #pragma once
-// One closed contour with a periodic geometric wave (thesis 6.2.3.3 and 6.2.4.1):
-// 1. the contour is re-fitted by least squares onto the layout's knots, now placed at arc-length
-//    positions (the spline is re-parametrised by the original's arc length, domain [0, L]);
-// 2. the knot points (wave peaks / corners) are translated along the outward normal of a
-//    smooth fit with single knots every quarter period (the sine's knots) with alternating signs,
-//    each amplitude limited by the skeleton guard if one is given;
-// 3. sine: Fowler-Bartels moves the de Boor points so that the curve meets the translated knot
-//    points exactly (plus equal first derivatives at the closing point, for a smooth seam);
-//    rectangle: the contour is fitted on the knot vector with the corner knots of multiplicity
-//    3, its de Boor points moved with their nearest knot point along the normal, then
-//    Fowler-Bartels and the flank spans become strips; triangle and sawtooth consist of strips
-//    only: every third de Boor point is a corner (Fig. 6.14B) and the two between are fitted to
-//    the contour offset linearly from one corner's amplitude to the next. On a straight contour
-//    that is the thesis' straight line with the points at a third and two thirds; on a curved
-//    contour the strip bends with it, so that the amplitude stays what was asked for.
+// One closed contour with a periodic geometric wave (thesis 6.2.3.3 and 6.2.4.1). The wave is an
+// offset of the contour by a signed amount that alternates between +-amplitude at the layout's
+// knot points:
+// 1. the knots are placed at arc-length positions (the spline is re-parametrised by the
+//    original's arc length, domain [0, L]); the icon's own corners stay corners (triple knots
+//    at their arc lengths);
+// 2. the knot points (wave peaks / corners) are translated along the contour's outward normal
+//    with alternating signs, each amplitude limited by the skeleton guard if one is given. A
+//    knot point on an icon corner, or so near one that inside the corner's angle its offset
+//    would fall past the bisector (contour_corners.hpp), moves onto the corner and along its
+//    bisector, to the corner's offset point;
+// 3. sine and rectangle: the contour offset by the wave's profile between the knot points (the
+//    sine's half cosines, the rectangle's plateaus and linear flanks) is fitted by least squares
+//    on the knots (offset_fit.hpp; the rectangle's corners with multiplicity 3), then
+//    Fowler-Bartels moves the de Boor points so that the curve meets the translated knot points
+//    and the icon's corners their offset points exactly (equal first derivatives at a smooth
+//    closing point), and the rectangle's flank spans become strips;
+//    triangle and sawtooth consist of strips only: every third de Boor point is a corner (Fig.
+//    6.14B), the two between follow the contour offset linearly from one corner's amplitude to
+//    the next (wave_strips.hpp), and an icon corner inside a strip splits it at its offset point.
 
+#include <memory>
 #include <vector>
 
 #include "vicc_glyphs/bspline/arc_length.hpp"
 #include "vicc_glyphs/bspline/bspline_curve.hpp"
+#include "vicc_glyphs/pacemod/contour_corners.hpp"
 #include "vicc_glyphs/pacemod/skeleton_guard.hpp"
 #include "vicc_glyphs/pacemod/wave_layout.hpp"
 
@@ -28,24 +35,37 @@ namespace pacemod {
 struct ContourWave {
   bspline::BSplineCurve curve;  ///< modified contour over [0, L] (L = original arc length)
   WaveLayout layout;
-  std::vector<Point2> knot_points;   ///< per layout peak: the original contour point k
+  /// Per layout peak: the spline parameter (= arc length) where the curve meets the translated
+  /// knot point: the peak's own, or that of the icon corner it moved onto.
+  std::vector<double> parameters;
+  std::vector<int> on_corner;        ///< per layout peak: index in ContourFrame::corners, or -1
+  std::vector<Point2> knot_points;   ///< per layout peak: the contour point k it moves from
   std::vector<Point2> directions;    ///< per layout peak: unit translation direction (sign * n)
   std::vector<GuardResult> guarded;  ///< per layout peak: the amplitude actually applied
   std::vector<bool> capped;          ///< per layout peak: limited by `caps` (crossing repair)
-  /// per layout peak: the translation length; the amplitude, or with stretch_at_corners next to a
-  /// sharp convex corner of the contour longer, so that the translated knot point still ends
-  /// `amplitude` away from the contour (the distance the amplitude is measured by).
+  /// Per layout peak: limited at an icon corner (sine, rectangle): inside the corner's angle
+  /// the knot point gets the distance where the sides' offset contour meets the bisector.
+  std::vector<bool> cornered;
+  /// Per layout peak: its offset falls past the bisector of an icon corner (inside the angle)
+  /// and the offset fit decides the curve there (sine, rectangle; no constraint of its own).
+  std::vector<bool> swallowed;
+  /// Per layout peak: the translation length. The amplitude (the distance from the contour),
+  /// except along a corner's bisector inside its angle: there the miter, amplitude / cos(turn/2).
   std::vector<double> translations;
 };
 
+namespace detail {
+class OffsetFit;
+}
+
 /// What a contour's wave is built on and that does not depend on the amplitudes: the layout,
-/// the smooth fit whose normals translate the knot points, and for the rectangle the fit on its
-/// knot vector with triple corners. Built once per contour, reused by every repair round.
+/// the contour's corners and, for the sine and the rectangle, the factorised least-squares fit
+/// onto their knots. Built once per contour, reused by every repair round.
 struct ContourFrame {
   WaveLayout layout;
-  bspline::BSplineCurve frame_fit;  ///< single knots every quarter period (+ the icon's corners)
-  double area = 0.0;                ///< signed area of frame_fit (orientation of the normals)
-  bspline::BSplineCurve rectangle_fit;  ///< Rectangle only: the fit on the rectangle's knots
+  double area = 0.0;                   ///< signed area of the original (orientation)
+  std::vector<ContourCorner> corners;  ///< of the original contour
+  std::shared_ptr<const detail::OffsetFit> offset_fit;  ///< sine and rectangle
 };
 
 /// Throws std::invalid_argument for an open curve or wave_count < 1.
@@ -55,25 +75,16 @@ ContourFrame contourFrame(const bspline::BSplineCurve& original,
 /// The wave on a frame built from the same `original` and `table` by contourFrame.
 ContourWave modifyContour(const ContourFrame& frame, const bspline::BSplineCurve& original,
                           const bspline::ArcLengthTable& table, double amplitude,
-                          const SkeletonGuard* guard, const std::vector<double>& caps = {},
-                          bool stretch_at_corners = false);
+                          const SkeletonGuard* guard, const std::vector<double>& caps = {});
 
 /// `original` must be closed (first == last point) and have a tangent everywhere; `table` its
 /// arc-length table; amplitude in image pixels (>= 0); `guard` may be null (no prevention);
-/// `caps`: empty, or per layout peak an upper bound on its amplitude (pixels);
-/// `stretch_at_corners`: lengthen translations next to sharp convex corners (see translations).
+/// `caps`: empty, or per layout peak an upper bound on its amplitude (pixels).
 /// Throws std::invalid_argument for an open curve or wave_count < 1.
 ContourWave modifyContour(const bspline::BSplineCurve& original,
                           const bspline::ArcLengthTable& table, Waveform waveform, int wave_count,
                           double amplitude, const SkeletonGuard* guard,
-                          const std::vector<double>& caps = {}, bool stretch_at_corners = false);
-
-/// Least-squares fit (normal equations, sparse Cholesky) of `original` onto `knots` (a clamped
-/// cubic knot vector over [0, L]) with the spline parameter equal to the original's arc length: 8
-/// samples per knot span.
-bspline::BSplineCurve fitOnArcLength(const bspline::BSplineCurve& original,
-                                     const bspline::ArcLengthTable& table,
-                                     const std::vector<double>& knots);
+                          const std::vector<double>& caps = {});
 
 /// Index of the de Boor point the curve passes through at a knot of multiplicity >= degree
 /// (or a domain end) of a clamped cubic; throws std::invalid_argument elsewhere.

@@ -35,9 +35,6 @@ struct WaveOptions {
   double skeleton_offset_mm = 0.3;
   double field_grid_scale = 1.0;  ///< feature-transform grid pixels per image pixel
   FeatureTransform feature_transform = FeatureTransform::Maurer;
-  /// Lengthen translations next to sharp convex corners so that the knot points keep the full
-  /// distance from the contour (see ContourWave::translations).
-  bool stretch_at_corners = false;
 };
 
 /// A knot point whose translation was shortened.
@@ -47,7 +44,9 @@ struct PeakReduction {
   /// "skeleton": the half-space test of 6.2.4.1; "crossing": the polygon check after it (the
   /// modified contours still crossed near this knot point, so its amplitude was halved, at
   /// most kMaxRepairRounds times, the last time to 0; a crossing that outlives that flattens
-  /// the knot points next to the flat stretch, kMaxFlatteningRounds times at most).
+  /// the knot points next to the flat stretch, kMaxFlatteningRounds times at most); "corner":
+  /// a sine or rectangle knot point on an icon corner, moved into the corner's angle, where the
+  /// offset contour of its neighbours meets the bisector (nearer than the amplitude).
   std::string reason;
 };
 

@@ -15,6 +15,13 @@ namespace pacemod {
 /// front of k (<n, p - k> <= 0: p can never be closer than k along n).
 double skeletonAmplitude(const Point2& knot, const Point2& direction, const Point2& other);
 
+/// The same for a translation that takes the knot point away from its own contour by only
+/// `growth` (in (0, 1]) per unit length, as along the bisector into an icon corner (the miter):
+/// the smallest t > 0 with |k + t n - p| = growth * t, +infinity if there is none. growth = 1
+/// is skeletonAmplitude.
+double skeletonTranslation(const Point2& knot, const Point2& direction, const Point2& other,
+                           double growth);
+
 struct GuardResult {
   double amplitude = 0.0;  ///< allowed amplitude, in [0, requested]
   bool reduced = false;
@@ -29,8 +36,12 @@ class SkeletonGuard {
 
   /// Largest allowed amplitude <= `requested` for translating `knot` along the unit
   /// `direction`. A curve point counts as closer only when it is closer by more than the
-  /// field's grid pixel, so that k's own sampled neighbourhood does not trigger.
-  GuardResult limit(const Point2& knot, const Point2& direction, double requested) const;
+  /// field's grid pixel, so that k's own sampled neighbourhood does not trigger. With `growth`
+  /// < 1 (a knot point on an icon corner moving along its miter) a translation t puts the point
+  /// growth * t away from its contour: amplitudes are those distances (the translation is
+  /// amplitude / growth), and a curve point closer than that distance is the one to avoid.
+  GuardResult limit(const Point2& knot, const Point2& direction, double requested,
+                    double growth = 1.0) const;
 
  private:
   const NearestCurvePoint& field_;

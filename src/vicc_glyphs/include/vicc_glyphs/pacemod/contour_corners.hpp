@@ -1,0 +1,68 @@
+#pragma once
+// The sharp corners of an icon contour and its offset there (PACEMOD waves are offsets of the
+// contour by a signed amount w that varies along it). Away from corners the offset point is
+// k + w n. At a corner two cases differ:
+// - outside the angle the offset contour is a circular arc around the corner: the corner's
+//   offset point is corner + |w| along the bisector of both sides' normals;
+// - inside the angle the offsets of both sides overlap (a swallowtail): the offset contour is
+//   the two offset lines up to their meeting point on the bisector, corner + w / cos(turn / 2)
+//   (the miter), and the offset points of either side past the bisector do not belong to it.
+
+#include <vector>
+
+#include "vicc_glyphs/bspline/arc_length.hpp"
+#include "vicc_glyphs/bspline/bspline_curve.hpp"
+
+namespace vicc_glyphs {
+namespace pacemod {
+
+/// Inside an angle sharper than this the miter is capped at this length (turns above 165
+/// degrees: spikes thinner than 15 degrees); there the corner point stays nearer than w.
+constexpr double kMaxMiterLength = 8.0;
+
+/// A sharp corner of a closed contour: a C0 join (the B-spline conversion keeps joins turning
+/// by more than 3.5 degrees as triple knots), or the closing point where the end tangents
+/// differ by as much.
+struct ContourCorner {
+  double arc_length = 0.0;
+  Point2 point = Point2::Zero();
+  Point2 tangent_before = Point2::Zero();  ///< unit tangent (direction of travel) before it
+  Point2 tangent_after = Point2::Zero();   ///< unit tangent after it
+  Point2 normal_before = Point2::Zero();   ///< outward unit normal of the side ending here
+  Point2 normal_after = Point2::Zero();    ///< outward unit normal of the side starting here
+  Point2 bisector = Point2::Zero();        ///< outward unit bisector of the two normals
+  double half_turn_cosine = 1.0;           ///< cos(turn / 2) = <bisector, normal_before>
+  /// Sum of the unit tangents of both sides: across the bisector line, along the way.
+  Point2 forward = Point2::Zero();
+  /// +1 when outward offsets (w > 0) lie inside the angle (a concave corner), -1 when inward
+  /// ones do (a convex corner).
+  int inner_sign = 1;
+
+  /// True when the offset w lies inside the angle (the swallowtail side).
+  bool inside(double w) const { return w * inner_sign > 0.0; }
+  /// Distance from the corner per unit of w along the bisector: 1 outside the angle, the
+  /// miter length 1 / cos(turn / 2) (capped at kMaxMiterLength) inside.
+  double stretch(double w) const;
+  /// The corner's point of the contour offset by w.
+  Point2 offsetPoint(double w) const { return point + w * stretch(w) * bisector; }
+  /// Arc length to either side within which offset points of the sides (by w) lie past the
+  /// bisector: |w| tan(turn / 2) inside the angle, 0 outside.
+  double swallowtail(double w) const;
+  /// True when `q`, an offset point of the side before (`side` = -1) or after (+1) the corner,
+  /// lies past the bisector on the other side's half.
+  bool pastBisector(const Point2& q, int side) const {
+    return -side * (q - point).dot(forward) > 0.0;
+  }
+};
+
+/// The corners of a closed contour (clamped cubic B-spline, first == last point) by increasing
+/// arc length, the closing point (if a corner) first at 0; `area` is its signed area (the
+/// orientation of the normals: positive = clockwise on screen).
+std::vector<ContourCorner> contourCorners(const bspline::BSplineCurve& contour,
+                                          const bspline::ArcLengthTable& table, double area);
+
+/// Outward unit normal for the tangent `d` of a contour with signed area `area`.
+Point2 outwardNormalOf(const Point2& d, double area);
+
+}  // namespace pacemod
+}  // namespace vicc_glyphs

@@ -1,0 +1,104 @@
+#include "vicc_glyphs/pacemod/contour_corners.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vicc_glyphs {
+namespace pacemod {
+namespace {
+
+// Joins turning by less than this are smooth (the B-spline conversion makes them C1).
+const double kSmoothCosine = std::cos(3.5 * M_PI / 180.0);
+// Corners closer than this (px of arc length: a sub-pixel step or tooth of the imported
+// polygon, invisible at the rendered size) are one corner that turns by both, or none if their
+// turns cancel.
+constexpr double kOneCorner = 0.5;
+
+// Unit tangent (in the direction of travel) of the side after (`step` +1) or before (-1) the
+// de Boor point `from` of a clamped cubic that passes through it (a C0 corner): the direction
+// of its control polygon there, zero-length handles skipped.
+Point2 polygonDirection(const std::vector<Point2>& points, int from, int step) {
+  for (int k = from + step; k >= 0 && k < static_cast<int>(points.size()); k += step) {
+    const Point2 d = step * (points[k] - points[from]);
+    if (d.norm() > 1e-9) return d.normalized();
+  }
+  return Point2::Zero();
+}
+
+ContourCorner cornerOf(double arc_length, const Point2& point, const Point2& before,
+                       const Point2& after, double area) {
+  ContourCorner corner;
+  corner.arc_length = arc_length;
+  corner.point = point;
+  corner.tangent_before = before;
+  corner.tangent_after = after;
+  corner.normal_before = outwardNormalOf(before, area);
+  corner.normal_after = outwardNormalOf(after, area);
+  corner.forward = before + after;
+  const Point2 sum = corner.normal_before + corner.normal_after;
+  // A cusp (a turn of 180 degrees, a spike's tip) has no bisector of the normals: straight on
+  // past the tip is outward.
+  corner.bisector = sum.norm() > 1e-9 ? Point2(sum.normalized()) : Point2(before);
+  corner.half_turn_cosine = std::max(0.0, corner.bisector.dot(corner.normal_before));
+  corner.inner_sign = corner.normal_before.dot(after) > 0.0 ? 1 : -1;
+  return corner;
+}
+
+}  // namespace
+
+double ContourCorner::stretch(double w) const {
+  if (!inside(w)) return 1.0;
+  return std::min(kMaxMiterLength, 1.0 / std::max(half_turn_cosine, 1e-12));
+}
+
+double ContourCorner::swallowtail(double w) const {
+  if (!inside(w)) return 0.0;
+  const double sine = std::sqrt(std::max(0.0, 1.0 - half_turn_cosine * half_turn_cosine));
+  return std::abs(w) * std::min(kMaxMiterLength, sine / std::max(half_turn_cosine, 1e-12));
+}
+
+Point2 outwardNormalOf(const Point2& d, double area) {
+  const Point2 left = Point2(d.y(), -d.x()).normalized();
+  return area > 0.0 ? left : Point2(-left);
+}
+
+std::vector<ContourCorner> contourCorners(const bspline::BSplineCurve& contour,
+                                          const bspline::ArcLengthTable& table, double area) {
+  std::vector<ContourCorner> corners;
+  const std::vector<Point2>& points = contour.controlPoints();
+  const int last = static_cast<int>(points.size()) - 1;
+  const Point2 end_in = polygonDirection(points, last, -1);
+  const Point2 start_out = polygonDirection(points, 0, 1);
+  if (end_in.norm() > 0.0 && start_out.norm() > 0.0 && end_in.dot(start_out) < kSmoothCosine) {
+    corners.push_back(cornerOf(0.0, points.front(), end_in, start_out, area));
+  }
+  for (double b : contour.breakpoints()) {
+    if (b <= contour.domainBegin() || b >= contour.domainEnd() ||
+        contour.multiplicity(b) < contour.degree()) {
+      continue;
+    }
+    // The de Boor point the curve passes through at a knot of multiplicity >= 3.
+    const auto first = std::lower_bound(contour.knots().begin(), contour.knots().end(), b);
+    const int c = static_cast<int>(first - contour.knots().begin()) - 1;
+    const Point2 in = polygonDirection(points, c, -1), out = polygonDirection(points, c, 1);
+    if (!(in.norm() > 0.0 && out.norm() > 0.0)) continue;
+    const double l = table.lengthAt(b);
+    if (!corners.empty() && l - corners.back().arc_length < kOneCorner) {
+      const ContourCorner& previous = corners.back();
+      corners.back() =
+          cornerOf(previous.arc_length, previous.point, previous.tangent_before, out, area);
+    } else if (in.dot(out) < kSmoothCosine) {
+      corners.push_back(cornerOf(l, points[c], in, out, area));
+    }
+  }
+  // Merged corners that turn back by less than a smooth join are none.
+  corners.erase(std::remove_if(corners.begin(), corners.end(),
+                               [](const ContourCorner& c) {
+                                 return c.tangent_before.dot(c.tangent_after) > kSmoothCosine;
+                               }),
+                corners.end());
+  return corners;
+}
+
+}  // namespace pacemod
+}  // namespace vicc_glyphs

@@ -1,0 +1,113 @@
+#include "wave_strips.hpp"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+
+namespace vicc_glyphs {
+namespace pacemod {
+namespace detail {
+namespace {
+
+constexpr int kStripSamples = 9;
+constexpr int kArcSamples = 4;         // per half arc around an icon corner
+constexpr double kNormalChord = 0.25;  // px of arc length to either side
+
+}  // namespace
+
+Point2 OffsetFrame::normal(double l) const {
+  // The chord over a small stretch: sub-pixel steps of an imported polygon (and zero-length
+  // handles) do not turn the offset by their own angle.
+  const double end = table.totalLength();
+  const Point2 d = original.pointAt(table.parameterAt(std::min(l + kNormalChord, end))) -
+                   original.pointAt(table.parameterAt(std::max(l - kNormalChord, 0.0)));
+  if (d.norm() > 1e-9) return outwardNormalOf(d, area);
+  return outwardNormalOf(original.derivativeAt(table.parameterAt(l)), area);
+}
+
+Point2 OffsetFrame::offsetPoint(double l, double w) const {
+  return original.pointAt(table.parameterAt(l)) + w * normal(l);
+}
+
+// Points of the circular arc of radius |w| around `corner` between its offset point (on the
+// bisector) and the offset of the side after it (`side` +1) or before it (-1), excluding both
+// ends, ordered along the contour: the offset contour outside the corner's angle.
+std::vector<Point2> outerArc(const ContourCorner& corner, double w, int side) {
+  std::vector<Point2> arc;
+  if (corner.inside(w) || w == 0.0) return arc;
+  const Point2 normal = side > 0 ? corner.normal_after : corner.normal_before;
+  const double cross = corner.bisector.x() * normal.y() - corner.bisector.y() * normal.x();
+  const double half_turn = std::acos(std::clamp(corner.half_turn_cosine, 0.0, 1.0));
+  for (int k = 1; k < kArcSamples; ++k) {
+    // From the bisector towards the side's normal (after), or back (before).
+    const double t = side > 0 ? double(k) / kArcSamples : 1.0 - double(k) / kArcSamples;
+    const double angle = (cross >= 0.0 ? 1.0 : -1.0) * t * half_turn;
+    const double c = std::cos(angle), s = std::sin(angle);
+    const Point2 b = corner.bisector;
+    arc.push_back(corner.point + w * Point2(c * b.x() - s * b.y(), s * b.x() + c * b.y()));
+  }
+  return arc;
+}
+
+void fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
+              const OffsetFrame& frame) {
+  const Point2 p0 = points[first], p3 = points[first + 3];
+  // The offset path with the curve parameter of each point: the arc-length fraction along the
+  // piece, or (once a corner changed the path) the chord length along it.
+  std::vector<Point2> path{p0};
+  std::vector<double> at{0.0};
+  bool by_chord = false;
+  auto addArc = [&](const ContourCorner* corner, double w, int side) {
+    if (!corner) return;
+    for (const Point2& q : outerArc(*corner, w, side)) {
+      path.push_back(q);
+      at.push_back(side > 0 ? 0.0 : 1.0);
+      by_chord = true;
+    }
+  };
+  addArc(piece.corner_at_begin, piece.w0, +1);
+  for (int k = 1; k <= kStripSamples; ++k) {
+    const double t = static_cast<double>(k) / (kStripSamples + 1);
+    const Point2 q =
+        frame.offsetPoint(piece.l0 + t * (piece.l1 - piece.l0), (1 - t) * piece.w0 + t * piece.w1);
+    if ((piece.corner_at_begin && piece.corner_at_begin->pastBisector(q, +1)) ||
+        (piece.corner_at_end && piece.corner_at_end->pastBisector(q, -1))) {
+      by_chord = true;
+      continue;
+    }
+    path.push_back(q);
+    at.push_back(t);
+  }
+  addArc(piece.corner_at_end, piece.w1, -1);
+  path.push_back(p3);
+  at.push_back(1.0);
+  if (by_chord) {
+    at.assign(1, 0.0);
+    for (std::size_t i = 1; i < path.size(); ++i) {
+      at.push_back(at.back() + (path[i] - path[i - 1]).norm());
+    }
+    for (double& t : at) t = at.back() > 0.0 ? t / at.back() : 0.0;
+  }
+  if (path.size() < 4 || !(at.back() > 0.0)) {  // too little left: the straight line
+    points[first + 1] = p0 + (p3 - p0) / 3.0;
+    points[first + 2] = p0 + 2.0 * (p3 - p0) / 3.0;
+    return;
+  }
+  Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
+  Eigen::Matrix2d rhs = Eigen::Matrix2d::Zero();
+  for (std::size_t i = 1; i + 1 < path.size(); ++i) {
+    const double t = at[i];
+    const double b0 = (1 - t) * (1 - t) * (1 - t), b1 = 3 * t * (1 - t) * (1 - t),
+                 b2 = 3 * t * t * (1 - t), b3 = t * t * t;
+    const Eigen::Vector2d basis(b1, b2);
+    normal += basis * basis.transpose();
+    rhs += basis * (path[i] - b0 * p0 - b3 * p3).transpose();
+  }
+  const Eigen::Matrix2d inner = normal.ldlt().solve(rhs);
+  points[first + 1] = inner.row(0).transpose();
+  points[first + 2] = inner.row(1).transpose();
+}
+
+}  // namespace detail
+}  // namespace pacemod
+}  // namespace vicc_glyphs
