@@ -13,6 +13,7 @@
 namespace vicc_tracking {
 namespace {
 constexpr double kWarnPeriod = 5.0;  // s between repeats of the same warning
+constexpr double kTfResubscribePeriod = 2.0;  // wall s between re-subscriptions to tf
 }
 
 TrackerRos::TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
@@ -20,7 +21,9 @@ TrackerRos::TrackerRos(ros::NodeHandle& nh, ros::NodeHandle& private_nh,
     : config_(readTrackerConfig(private_nh, parameter_names_)),
       settings_(readTrackerNodeSettings(private_nh, parameter_names_)),
       reconfigure_(std::make_unique<TrackerReconfigure>(private_nh, config_)),
-      tf_listener_(tf_buffer_, nh) {
+      tf_nh_(nh),
+      tf_listener_(std::make_unique<tf2_ros::TransformListener>(tf_buffer_, nh)),
+      tf_subscribed_at_(ros::WallTime::now()) {
   if (unknown_parameters == UnknownParameters::kWarn) {
     vicc_common::warnUnknownRosParameters(private_nh, parameter_names_);
   }
@@ -118,6 +121,17 @@ void TrackerRos::onCameraFrame(const sensor_msgs::ImageConstPtr& depth,
   processPending();
 }
 
+void TrackerRos::resubscribeTransforms() {
+  const ros::WallTime now = ros::WallTime::now();
+  if ((now - tf_subscribed_at_).toSec() < kTfResubscribePeriod) return;
+  tf_listener_.reset();  // joins its thread before the new one subscribes
+  tf_listener_ = std::make_unique<tf2_ros::TransformListener>(tf_buffer_, tf_nh_);
+  tf_subscribed_at_ = now;
+  ROS_INFO_THROTTLE(kWarnPeriod, "tracker: subscribed to /tf and /tf_static again (a latched "
+                                 "transform can be missed by a subscriber joining as it is "
+                                 "published)");
+}
+
 bool TrackerRos::ensureTracker(const std::string& camera_frame) {
   if (tracker_) return true;
   const bool imu_used = config_.wait_for_imu || needsImu(config_.init_strategy);
@@ -136,6 +150,7 @@ bool TrackerRos::ensureTracker(const std::string& camera_frame) {
                         "tracker: no IMU -> camera extrinsic on tf (%s -> %s): %s. Publish it on "
                         "/tf_static.",
                         imu_frame_.c_str(), camera_frame.c_str(), error.what());
+      resubscribeTransforms();
       return false;
     }
   }
@@ -149,6 +164,7 @@ bool TrackerRos::ensureTracker(const std::string& camera_frame) {
     } catch (const std::exception& error) {
       ROS_WARN_THROTTLE(kWarnPeriod, "tracker: no transform %s -> %s on tf: %s",
                         camera_frame.c_str(), child.c_str(), error.what());
+      resubscribeTransforms();
       return false;
     }
   }

@@ -75,6 +75,11 @@ class TrackerRos {
   bool useCameraInfo(const sensor_msgs::CameraInfo& info);
 
   bool ensureTracker(const std::string& camera_frame);
+  /// Subscribes /tf and /tf_static anew (at most every few seconds) while a transform the
+  /// tracker needs is missing: a latched /tf_static published at the moment the listener
+  /// connects can be lost (roscpp's Publication::publish stores the latched message only
+  /// after delivering it to the links it already had); a new subscription receives it again.
+  void resubscribeTransforms();
   void processDepth(const CameraFrame& frame);
   void publish(const FrameReport& report, const sensor_msgs::Image& depth);
   void publishPose(const Eigen::Isometry3d& camera_pose, const ros::Time& stamp,
@@ -101,7 +106,9 @@ class TrackerRos {
   TrackingState last_state_ = TrackingState::kInitializing;
 
   tf2_ros::Buffer tf_buffer_;
-  tf2_ros::TransformListener tf_listener_;
+  ros::NodeHandle tf_nh_;
+  std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+  ros::WallTime tf_subscribed_at_;
   tf2_ros::TransformBroadcaster tf_broadcaster_;
   /// depth/image (raw or e.g. compressedDepth, ~image_transport) + the camera_info beside it
   std::unique_ptr<CameraSubscription> camera_sub_;
