@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 namespace vicc_common::cli {
@@ -150,6 +151,24 @@ std::string helpText(const std::string& synopsis, const std::string& description
   if (!description.empty()) text += description + (description.back() == '\n' ? "" : "\n");
   if (!specs.empty()) text += "options:\n" + formatOptions(specs);
   return text;
+}
+
+int runTool(const std::string& tool, int argc, char** argv, const std::string& usage,
+            const std::function<int(const std::vector<std::string>&)>& run) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
+    std::cout << usage;
+    return 0;
+  }
+  try {
+    return run(args);
+  } catch (const UsageError& error) {
+    std::cerr << tool << ": " << error.what() << "\n" << usage;
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << tool << ": " << error.what() << "\n";
+    return 1;
+  }
 }
 
 }  // namespace vicc_common::cli

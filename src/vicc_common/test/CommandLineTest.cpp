@@ -98,5 +98,51 @@ TEST(CommandLine, HelpAlignsTheOptions) {
             "  --json  machine-readable output\n");
 }
 
+// runTool with these arguments; the exit code, stdout and stderr.
+struct ToolRun {
+  int code;
+  std::string out, err;
+};
+ToolRun runToolWith(std::vector<std::string> arguments,
+                    const std::function<int(const std::vector<std::string>&)>& run) {
+  arguments.insert(arguments.begin(), "tool");
+  std::vector<char*> argv;
+  for (std::string& argument : arguments) argv.push_back(argument.data());
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  const int code =
+      runTool("tool", static_cast<int>(argv.size()), argv.data(), "usage: tool\n", run);
+  const std::string out = testing::internal::GetCapturedStdout();
+  return {code, out, testing::internal::GetCapturedStderr()};
+}
+
+TEST(RunToolTest, HelpAlonePrintsTheUsageWithoutRunning) {
+  bool ran = false;
+  const auto run = [&ran](const std::vector<std::string>&) { return ran = true, 0; };
+  for (const std::string help : {"--help", "-h"}) {
+    const ToolRun result = runToolWith({help}, run);
+    EXPECT_EQ(result.code, 0);
+    EXPECT_EQ(result.out, "usage: tool\n");
+  }
+  EXPECT_FALSE(ran);
+}
+
+TEST(RunToolTest, ExitCodesSayWhatWentWrong) {
+  const ToolRun passed = runToolWith({"a", "b"}, [](const std::vector<std::string>& args) {
+    return args == std::vector<std::string>{"a", "b"} ? 3 : 4;
+  });
+  EXPECT_EQ(passed.code, 3);
+  const ToolRun usage = runToolWith({"--bad"}, [](const std::vector<std::string>&) -> int {
+    throw UsageError("unknown option '--bad'");
+  });
+  EXPECT_EQ(usage.code, 2);
+  EXPECT_EQ(usage.err, "tool: unknown option '--bad'\nusage: tool\n");
+  const ToolRun failed = runToolWith({}, [](const std::vector<std::string>&) -> int {
+    throw std::runtime_error("cannot open x.db");
+  });
+  EXPECT_EQ(failed.code, 1);
+  EXPECT_EQ(failed.err, "tool: cannot open x.db\n");
+}
+
 }  // namespace
 }  // namespace vicc_common::cli

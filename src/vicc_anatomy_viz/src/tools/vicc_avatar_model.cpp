@@ -57,18 +57,6 @@ int run(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
-    std::cout << usage();
-    return 0;
-  }
-  try {
-    return run(args);
-  } catch (const cli::UsageError& error) {
-    std::cerr << "vicc_avatar_model: " << error.what() << "\n" << usage();
-    return 2;
-  } catch (const std::exception& error) {
-    std::cerr << "vicc_avatar_model: " << error.what() << "\n";
-    return 1;
-  }
+  return cli::runTool("vicc_avatar_model", argc, argv, usage(),
+                      [](const std::vector<std::string>& arguments) { return run(arguments); });
 }

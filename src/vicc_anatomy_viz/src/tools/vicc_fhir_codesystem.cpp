@@ -53,18 +53,6 @@ int run(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
-    std::cout << kUsage;
-    return 0;
-  }
-  try {
-    return run(args);
-  } catch (const cli::UsageError& e) {
-    std::cerr << "vicc_fhir_codesystem: " << e.what() << "\n" << kUsage;
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "vicc_fhir_codesystem: " << e.what() << "\n";
-    return 1;
-  }
+  return cli::runTool("vicc_fhir_codesystem", argc, argv, kUsage,
+                      [](const std::vector<std::string>& arguments) { return run(arguments); });
 }

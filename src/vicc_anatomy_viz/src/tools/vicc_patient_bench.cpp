@@ -130,18 +130,7 @@ int run(const Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
-    std::cout << usage();
-    return 0;
-  }
-  try {
-    return run(parseOptions(args));
-  } catch (const cli::UsageError& e) {
-    std::cerr << "vicc_patient_bench: " << e.what() << "\n" << usage();
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "vicc_patient_bench: " << e.what() << "\n";
-    return 1;
-  }
+  return cli::runTool(
+      "vicc_patient_bench", argc, argv, usage(),
+      [](const std::vector<std::string>& arguments) { return run(parseOptions(arguments)); });
 }

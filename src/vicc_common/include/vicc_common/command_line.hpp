@@ -4,6 +4,7 @@
 // options, typed getters with ranges. Every mistake is one UsageError whose message says what
 // was wrong; tools print it with their usage and exit with 2.
 
+#include <functional>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -61,5 +62,11 @@ std::string formatOptions(const std::vector<OptionSpec>& specs);
 /// "usage: <synopsis>\n<description>\noptions:\n<formatOptions>".
 std::string helpText(const std::string& synopsis, const std::string& description,
                      const std::vector<OptionSpec>& specs);
+
+/// The main() of a tool: "--help" or "-h" alone prints `usage` (exit 0); otherwise `run` gets
+/// the arguments and its result is the exit code. A UsageError prints "<tool>: <what>" and the
+/// usage to stderr (exit 2), any other exception "<tool>: <what>" (exit 1).
+int runTool(const std::string& tool, int argc, char** argv, const std::string& usage,
+            const std::function<int(const std::vector<std::string>&)>& run);
 
 }  // namespace vicc_common::cli
