@@ -16,6 +16,8 @@ target_link_libraries(vicc_durability_bench vicc_anatomy_viz_core vicc_common_cl
 
 # The command lines of vicc_avatar_model and the bench tools (vicc_common's parser).
 catkin_add_gtest(vicc_anatomy_viz_tool_usage_test test/tools/ToolUsageTest.cpp)
+# run_command.hpp: the workspace's shared test helpers
+target_include_directories(vicc_anatomy_viz_tool_usage_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/../../test/common)
 target_compile_options(vicc_anatomy_viz_tool_usage_test PRIVATE ${VICC_WARNINGS})
 target_compile_definitions(vicc_anatomy_viz_tool_usage_test PRIVATE
   VICC_AVATAR_MODEL_TOOL="$<TARGET_FILE:vicc_avatar_model>"

@@ -15,6 +15,8 @@ catkin_add_gtest(vicc_anatomy_viz_fhir_codes_test
   test/fhir/FhirCodeSystemTest.cpp
   test/fhir/StandardCodesTest.cpp)
 catkin_add_gtest(vicc_anatomy_viz_fhir_conformance_test test/fhir/FhirConformanceTest.cpp)
+# run_command.hpp: the workspace's shared test helpers
+target_include_directories(vicc_anatomy_viz_fhir_conformance_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/../../test/common)
 
 foreach(test_target vicc_anatomy_viz_fhir_codes_test vicc_anatomy_viz_fhir_conformance_test)
   target_compile_options(${test_target} PRIVATE ${VICC_WARNINGS})

@@ -76,6 +76,8 @@ add_dependencies(avatar_display_rostest patient_status_server vicc_anatomy_viz_r
 
 # vicc_avatar_snapshot end to end (starts its own Xvfb and ROS master) and its refusals.
 catkin_add_gtest(vicc_avatar_snapshot_test test/rviz/AvatarSnapshotCliTest.cpp)
+# run_command.hpp: the workspace's shared test helpers
+target_include_directories(vicc_avatar_snapshot_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/../../test/common)
 target_compile_options(vicc_avatar_snapshot_test PRIVATE ${VICC_WARNINGS})
 target_compile_definitions(vicc_avatar_snapshot_test PRIVATE ${VICC_TEST_DEFINITIONS}
   VICC_AVATAR_SNAPSHOT="$<TARGET_FILE:vicc_avatar_snapshot>")

@@ -3,6 +3,8 @@
 # does not have (CATKIN_WHITELIST_PACKAGES) is left out: the checks are switched on at generate
 # time by whether the tool's target exists ($<TARGET_EXISTS>, whatever the configure order).
 catkin_add_gtest(vicc_install_space_test test/InstallSpaceTest.cpp)
+# run_command.hpp: the workspace's shared test helpers
+target_include_directories(vicc_install_space_test PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/../../test/common)
 target_compile_options(vicc_install_space_test PRIVATE ${VICC_WARNINGS})
 target_compile_definitions(vicc_install_space_test PRIVATE
   VICC_SOURCE_DIR="${CMAKE_SOURCE_DIR}" VICC_BUILD_DIR="${CMAKE_BINARY_DIR}"

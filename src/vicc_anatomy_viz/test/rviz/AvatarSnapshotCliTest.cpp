@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <string>
 
+#include "run_command.hpp"
 #include "vicc_anatomy_viz/patient_status_service.hpp"
 #include "vicc_anatomy_viz/record_json.hpp"
 
@@ -19,22 +20,11 @@ namespace {
 namespace fs = std::filesystem;
 using namespace vicc_anatomy_viz;
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;  ///< stdout and stderr
-};
+using vicc_test::CommandResult;
 
 CommandResult snapshot(const std::string& arguments, const std::string& environment = "") {
-  const std::string command = "env -u DISPLAY -u ROS_MASTER_URI " + environment + " " +
-                              VICC_AVATAR_SNAPSHOT + " " + arguments + " 2>&1";
-  CommandResult run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  std::array<char, 512> buffer;
-  while (fgets(buffer.data(), buffer.size(), pipe)) run.output += buffer.data();
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
+  return vicc_test::runCommand("env -u DISPLAY -u ROS_MASTER_URI " + environment + " " +
+                               VICC_AVATAR_SNAPSHOT + " " + arguments);
 }
 
 class AvatarSnapshotCliTest : public ::testing::Test {

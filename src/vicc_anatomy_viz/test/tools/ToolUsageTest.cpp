@@ -2,32 +2,16 @@
 // parser: an unknown option, a missing required option, a value of the wrong kind or out of
 // range is a usage error (exit code 2) whose message names it, followed by the usage.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <string>
+
+#include "run_command.hpp"
 
 namespace {
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;  ///< stdout and stderr together
-};
+using vicc_test::CommandResult;
 
-CommandResult run(const std::string& command) {
-  CommandResult result;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer{};
-  std::size_t read = 0;
-  while ((read = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
-    result.output.append(buffer.data(), read);
-  }
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+CommandResult run(const std::string& command) { return vicc_test::runCommand(command); }
 
 /// `tool arguments` fails with exit code 2, a message naming `expected`, and the usage.
 void expectUsageError(const std::string& tool, const std::string& arguments,
