@@ -22,7 +22,8 @@ target_compile_options(vicc_anatomy_viz_tool_usage_test PRIVATE ${VICC_WARNINGS}
 target_compile_definitions(vicc_anatomy_viz_tool_usage_test PRIVATE
   VICC_AVATAR_MODEL_TOOL="$<TARGET_FILE:vicc_avatar_model>"
   VICC_PATIENT_BENCH_TOOL="$<TARGET_FILE:vicc_patient_bench>"
-  VICC_DURABILITY_BENCH_TOOL="$<TARGET_FILE:vicc_durability_bench>")
+  VICC_DURABILITY_BENCH_TOOL="$<TARGET_FILE:vicc_durability_bench>"
+  VICC_AVATAR_FPS_TOOL="$<TARGET_FILE:vicc_avatar_fps>")
 target_link_libraries(vicc_anatomy_viz_tool_usage_test gtest_main)
 add_dependencies(vicc_anatomy_viz_tool_usage_test vicc_avatar_model vicc_patient_bench
-  vicc_durability_bench)
+  vicc_durability_bench vicc_avatar_fps)

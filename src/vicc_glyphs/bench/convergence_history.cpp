@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "direct_reference_solve.hpp"
+#include "vicc_common/command_line.hpp"
 #include "vicc_glyphs/io/load.hpp"
 #include "vicc_glyphs/render/renderer.hpp"
 
@@ -70,28 +71,41 @@ void printHistory(const std::string& path, int size, int iterations) {
   }
 }
 
-}  // namespace
+namespace cli = vicc_common::cli;
 
-int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::cerr << "usage: vicc_glyph_convergence [--size N] [--iterations N] INPUT...\n";
-    return 2;
-  }
+const std::vector<cli::OptionSpec> kOptionSpecs = {
+    {"size", "N", "edge length in pixels (default 512)"},
+    {"iterations", "N", "fixed iterations to record (default 20)"},
+};
+
+std::string usage() {
+  return cli::helpText("vicc_glyph_convergence [--size N] [--iterations N] INPUT...",
+                       "Per-iteration residual, error estimate and true error of the solver for "
+                       "each input.\nExit code 0 on success, 1 if an input failed, 2 on a usage "
+                       "error.",
+                       kOptionSpecs);
+}
+
+int run(const std::vector<std::string>& args) {
+  const cli::ParsedArguments parsed = cli::parseArguments(args, kOptionSpecs);
+  if (parsed.positional.empty()) throw cli::UsageError("no input given");
+  const int size = parsed.integer("size", 512, 16, 8192);
+  const int iterations = parsed.integer("iterations", 20, 1, 1000);
   Eigen::setNbThreads(1);
-  int size = 512, iterations = 20;
   int failures = 0;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if ((arg == "--size" || arg == "--iterations") && i + 1 < argc) {
-      (arg == "--size" ? size : iterations) = std::max(1, std::atoi(argv[++i]));
-      continue;
-    }
+  for (const std::string& input : parsed.positional) {
     try {
-      printHistory(arg, size, iterations);
+      printHistory(input, size, iterations);
     } catch (const std::exception& e) {
-      std::cerr << arg << ": " << e.what() << "\n";
+      std::cerr << input << ": " << e.what() << "\n";
       ++failures;
     }
   }
   return failures ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return cli::runTool("vicc_glyph_convergence", argc, argv, usage(), run);
 }

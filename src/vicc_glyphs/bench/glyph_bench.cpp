@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "direct_reference_solve.hpp"
+#include "vicc_common/command_line.hpp"
 #include "vicc_glyphs/io/load.hpp"
 #include "vicc_glyphs/render/renderer.hpp"
 
@@ -93,28 +94,31 @@ Measurement measure(const std::string& path, int size, int repeats, double toler
   return m;
 }
 
-}  // namespace
+namespace cli = vicc_common::cli;
 
-int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::cerr << "usage: vicc_glyph_bench [--size N] [--repeats N] [--tolerance E] INPUT...\n";
-    return 2;
-  }
+const std::vector<cli::OptionSpec> kOptionSpecs = {
+    {"size", "N", "edge length in pixels (default 512)"},
+    {"repeats", "N", "timed renders per input after the first (default 21)"},
+    {"tolerance", "E", "stopping tolerance instead of the renderer's default"},
+};
+
+std::string usage() {
+  return cli::helpText("vicc_glyph_bench [--size N] [--repeats N] [--tolerance E] INPUT...",
+                       "Render time, CG iterations and the error against a direct solve per "
+                       "input (Markdown table on stdout).\nExit code 0 on success, 1 if an input "
+                       "failed, 2 on a usage error.",
+                       kOptionSpecs);
+}
+
+int run(const std::vector<std::string>& args) {
+  const cli::ParsedArguments parsed = cli::parseArguments(args, kOptionSpecs);
+  if (parsed.positional.empty()) throw cli::UsageError("no input given");
+  const int size = parsed.integer("size", 512, 16, 8192);
+  const int repeats = parsed.integer("repeats", 21, 1, 100000);
+  const double tolerance = parsed.number("tolerance", -1.0, 0.0, 1.0);  // < 0: the default
+  const std::vector<std::string>& inputs = parsed.positional;
   cv::setNumThreads(1);  // one core: no OpenCV worker threads
   Eigen::setNbThreads(1);
-  int size = 512, repeats = 21;
-  double tolerance = -1.0;  // < 0: the renderer's default stopping criterion
-  std::vector<std::string> inputs;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if ((arg == "--size" || arg == "--repeats") && i + 1 < argc) {
-      (arg == "--size" ? size : repeats) = std::max(1, std::atoi(argv[++i]));
-    } else if (arg == "--tolerance" && i + 1 < argc) {
-      tolerance = std::max(0.0, std::atof(argv[++i]));
-    } else {
-      inputs.push_back(arg);
-    }
-  }
   std::cout << "| input | curves | size | one-shot ms | median ms | median CPU ms | solve ms | "
                "levels | CG iterations | converged | error estimate | MAE vs direct | max error vs "
                "direct |\n"
@@ -136,4 +140,10 @@ int main(int argc, char** argv) {
     }
   }
   return failures ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return cli::runTool("vicc_glyph_bench", argc, argv, usage(), run);
 }

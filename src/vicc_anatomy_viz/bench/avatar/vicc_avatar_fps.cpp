@@ -30,14 +30,15 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
-#include <regex>
 #include <vector>
 
 #include "vicc_anatomy_viz/patient_status_service.hpp"
 #include "vicc_anatomy_viz/ros/status_message.hpp"
 #include "vicc_anatomy_viz/rviz/avatar_display.hpp"
 #include "vicc_avatar_snapshot_environment.hpp"
+#include "vicc_avatar_snapshot_options.hpp"
 #include "vicc_avatar_snapshot_renderer.hpp"
+#include "vicc_common/command_line.hpp"
 
 namespace {
 
@@ -52,45 +53,45 @@ struct BenchOptions {
   int width = 1280, height = 800, frames = 360;
 };
 
-BenchOptions parse(int argc, char** argv) {
+namespace cli = vicc_common::cli;
+
+const std::vector<cli::OptionSpec> kOptionSpecs = {
+    {"db", "FILE", "record database (vicc_patient's)"},
+    {"patient", "ID", "patient whose status is drawn"},
+    {"date", "D", "examination at or before this date (default: the latest)"},
+    {"full", "", "a full status instead: every structure and skin region encoded"},
+    {"relief", "", "with --full: every entry in the pain trigger's relief"},
+    {"pre-shaded", "", "the relief as the pre-shaded texture (per-pixel relief off)"},
+    {"no-aa", "", "rviz without multisampling (--disable-anti-aliasing)"},
+    {"size", "WxH", "render window size (default 1280x800)"},
+    {"frames", "N", "frames per mode (default 360)"},
+};
+
+std::string usage() {
+  return cli::helpText(
+      "vicc_avatar_fps --db FILE --patient ID [--date D] [--full [--relief]] [--pre-shaded] "
+      "[--no-aa] [--size WxH] [--frames N]",
+      "Frames per second of rviz drawing the avatar while orbiting it, transparency on and "
+      "off, and the floor with the display off.\nExit code 0 on success, 1 on an error, 2 on a "
+      "usage error.",
+      kOptionSpecs);
+}
+
+/// Throws cli::UsageError naming what is wrong.
+BenchOptions parseOptions(const std::vector<std::string>& args) {
+  const cli::ParsedArguments parsed = cli::parseArguments(args, kOptionSpecs);
+  if (!parsed.positional.empty()) throw cli::UsageError("unexpected " + parsed.positional[0]);
   BenchOptions options;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const std::string value = i + 1 < argc ? argv[i + 1] : "";
-    if (arg == "--full") {
-      options.full = true;
-      continue;
-    }
-    if (arg == "--no-aa") {
-      options.no_antialiasing = true;
-      continue;
-    }
-    if (arg == "--relief" || arg == "--pre-shaded") {
-      (arg == "--relief" ? options.relief : options.pre_shaded) = true;
-      continue;
-    }
-    ++i;
-    if (arg == "--db")
-      options.db = value;
-    else if (arg == "--patient")
-      options.patient = value;
-    else if (arg == "--date")
-      options.date = value;
-    else if (arg == "--frames")
-      options.frames = std::stoi(value);
-    else if (arg == "--size") {
-      std::smatch match;
-      if (!std::regex_match(value, match, std::regex("([0-9]+)x([0-9]+)")))
-        throw std::invalid_argument("--size WxH");
-      options.width = std::stoi(match[1]);
-      options.height = std::stoi(match[2]);
-    } else
-      throw std::invalid_argument("unknown option " + arg);
-  }
-  if (options.db.empty() || options.patient.empty())
-    throw std::invalid_argument(
-        "usage: vicc_avatar_fps --db FILE --patient ID [--date D] [--full [--relief]] "
-        "[--pre-shaded] [--no-aa] [--size WxH] [--frames N]");
+  options.db = parsed.required("db", "a run");
+  options.patient = parsed.required("patient", "a run");
+  options.date = parsed.value("date");
+  options.full = parsed.flag("full");
+  options.relief = parsed.flag("relief");
+  options.pre_shaded = parsed.flag("pre-shaded");
+  options.no_antialiasing = parsed.flag("no-aa");
+  if (parsed.has("size"))
+    snapshot::parseWindowSize(parsed.value("size"), options.width, options.height);
+  options.frames = parsed.integer("frames", options.frames, 1, 1000000);
   return options;
 }
 
@@ -197,8 +198,7 @@ Rate framesPerSecond(snapshot::AvatarRenderer& renderer, const RenderCounter& co
   return {rendered / (timer.nsecsElapsed() * 1e-9), rendered / (cpuSeconds() - cpu_start)};
 }
 
-int run(int argc, char** argv) {
-  const BenchOptions options = parse(argc, argv);
+int run(const BenchOptions& options, char** argv) {
   const vicc_msgs::EncodedStatus status = patientStatus(options);
   snapshot::ChildProcess xvfb, master;
   const char* display = std::getenv("DISPLAY");
@@ -259,10 +259,8 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const std::exception& error) {
-    std::cerr << "vicc_avatar_fps: " << error.what() << "\n";
-    return 1;
-  }
+  return cli::runTool("vicc_avatar_fps", argc, argv, usage(),
+                      [argv](const std::vector<std::string>& arguments) {
+                        return run(parseOptions(arguments), argv);
+                      });
 }

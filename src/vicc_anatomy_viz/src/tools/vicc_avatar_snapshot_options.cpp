@@ -37,18 +37,6 @@ std::string requiredValue(const cli::ParsedArguments& parsed, const std::string&
   return value;
 }
 
-void readSize(const std::string& text, SnapshotOptions& options) {
-  std::smatch match;
-  if (!std::regex_match(text, match, std::regex("([0-9]{1,5})x([0-9]{1,5})")))
-    throw cli::UsageError("--size: expected WxH, e.g. 800x1000, got '" + text + "'");
-  options.width = std::stoi(match[1]);
-  options.height = std::stoi(match[2]);
-  for (int side : {options.width, options.height})
-    if (side < kMinSide || side > kMaxSide)
-      throw cli::UsageError("--size: each side must be " + std::to_string(kMinSide) + ".." +
-                            std::to_string(kMaxSide) + " pixels, got '" + text + "'");
-}
-
 std::vector<std::string> splitCategories(const std::string& text) {
   std::vector<std::string> categories;
   std::istringstream stream(text);
@@ -59,6 +47,18 @@ std::vector<std::string> splitCategories(const std::string& text) {
 }
 
 }  // namespace
+
+void parseWindowSize(const std::string& text, int& width, int& height) {
+  std::smatch match;
+  if (!std::regex_match(text, match, std::regex("([0-9]{1,5})x([0-9]{1,5})")))
+    throw cli::UsageError("--size: expected WxH, e.g. 800x1000, got '" + text + "'");
+  width = std::stoi(match[1]);
+  height = std::stoi(match[2]);
+  for (int side : {width, height})
+    if (side < kMinSide || side > kMaxSide)
+      throw cli::UsageError("--size: each side must be " + std::to_string(kMinSide) + ".." +
+                            std::to_string(kMaxSide) + " pixels, got '" + text + "'");
+}
 
 SnapshotOptions parseSnapshotOptions(const std::vector<std::string>& args) {
   const cli::ParsedArguments parsed = cli::parseArguments(args, kOptionSpecs);
@@ -71,7 +71,7 @@ SnapshotOptions parseSnapshotOptions(const std::vector<std::string>& args) {
   options.out = requiredValue(parsed, "out");
   options.date = parsed.value("date");
   options.hidden_categories = splitCategories(parsed.value("hide"));
-  if (parsed.has("size")) readSize(parsed.value("size"), options);
+  if (parsed.has("size")) parseWindowSize(parsed.value("size"), options.width, options.height);
   if (parsed.has("view")) {
     const std::string value = parsed.value("view");
     const auto view = avatar_view::bodyViewFromString(value);

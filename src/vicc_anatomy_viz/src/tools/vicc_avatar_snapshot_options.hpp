@@ -23,6 +23,10 @@ struct SnapshotOptions {
 
 extern const char* const kSnapshotUsage;
 
+/// `text` as WxH (each side within the snapshot's limits) into width and height; a
+/// cli::UsageError naming --size otherwise.
+void parseWindowSize(const std::string& text, int& width, int& height);
+
 /// Throws std::invalid_argument naming the option on a missing, unknown or malformed one.
 SnapshotOptions parseSnapshotOptions(const std::vector<std::string>& args);
 

@@ -1,4 +1,4 @@
-// The avatar model tool and the two bench tools parse their command lines with vicc_common's
+// The avatar model tool and the bench tools parse their command lines with vicc_common's
 // parser: an unknown option, a missing required option, a value of the wrong kind or out of
 // range is a usage error (exit code 2) whose message names it, followed by the usage.
 #include <gtest/gtest.h>
@@ -44,6 +44,14 @@ TEST(ToolUsage, DurabilityBench) {
   expectUsageError(VICC_DURABILITY_BENCH_TOOL, "--dir /tmp --records 0", "--records");
   expectUsageError(VICC_DURABILITY_BENCH_TOOL, "--dir /tmp --bulk lots", "--bulk");
   expectUsageError(VICC_DURABILITY_BENCH_TOOL, "--dir /tmp --repeats 3", "--repeats");
+}
+
+TEST(ToolUsage, AvatarFps) {
+  // Usage errors come before any X server or rviz is started.
+  expectUsageError(VICC_AVATAR_FPS_TOOL, "--patient P", "needs --db");
+  expectUsageError(VICC_AVATAR_FPS_TOOL, "--db x.db --patient P --size 10x10", "--size");
+  expectUsageError(VICC_AVATAR_FPS_TOOL, "--db x.db --patient P --frames 0", "--frames");
+  expectUsageError(VICC_AVATAR_FPS_TOOL, "--db x.db --patient P --fulll", "--fulll");
 }
 
 }  // namespace

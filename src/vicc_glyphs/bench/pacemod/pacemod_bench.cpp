@@ -3,7 +3,7 @@
 // rendered; then, on the result, the waves along each modified contour are counted and their
 // amplitudes measured from the distance to the original contour (wave_measurement.hpp), and
 // all polygons are checked for crossings. Prints Markdown tables (see README.md here).
-// Usage: vicc_glyphs_pacemod_bench [ICON_DIR] [--quick] [--verbose] [--opencv-labels]
+// Usage (--help): vicc_glyphs_pacemod_bench [ICON_DIR] [--quick] [--verbose] [--opencv-labels]
 //        [--waveform sine|triangle|sawtooth|rectangle] [--no-render]
 //        [--icon NAME.svg] [--frequency WAVES_PER_10MM] [--amplitude MM] [--overlays DIR]
 
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "contour_overlay.hpp"
+#include "vicc_common/command_line.hpp"
 #include "vicc_glyphs/io/load.hpp"
 #include "vicc_glyphs/pacemod/curve_selection.hpp"
 #include "vicc_glyphs/pacemod/periodic_waves.hpp"
@@ -156,37 +157,49 @@ void printRow(const std::string& label, const Totals& t) {
       percentile95(t.total_ms), maximum(t.total_ms));
 }
 
-}  // namespace
+namespace cli = vicc_common::cli;
 
-int main(int argc, char** argv) {
-  fs::path dir = VICC_GLYPHS_DATA_DIR "/icons";
-  bool quick = false;
-  std::string only_waveform, only_icon;
-  double only_frequency = 0.0, only_amplitude = -1.0;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--quick") {
-      quick = true;
-    } else if (arg == "--verbose") {
-      verbose = true;
-    } else if (arg == "--no-render") {
-      render_glyphs = false;
-    } else if (arg == "--waveform" && i + 1 < argc) {
-      only_waveform = argv[++i];
-    } else if (arg == "--icon" && i + 1 < argc) {
-      only_icon = argv[++i];
-    } else if (arg == "--frequency" && i + 1 < argc) {
-      only_frequency = std::stod(argv[++i]);
-    } else if (arg == "--amplitude" && i + 1 < argc) {
-      only_amplitude = std::stod(argv[++i]);
-    } else if (arg == "--overlays" && i + 1 < argc) {
-      overlay_dir = argv[++i];
-    } else if (arg == "--opencv-labels") {
-      options.feature_transform = FeatureTransform::OpenCvLabels;
-    } else {
-      dir = arg;
-    }
+const std::vector<cli::OptionSpec> kOptionSpecs = {
+    {"quick", "", "one frequency (4 waves/10 mm) and one amplitude (0.5 mm)"},
+    {"verbose", "", "list every glyph and lobe that fails a check"},
+    {"no-render", "", "checks only, no rendering (faster searches for failures)"},
+    {"opencv-labels", "", "OpenCV's labelled distance transform for the skeleton guard"},
+    {"waveform", "W", "only this waveform: sine, triangle, sawtooth or rectangle"},
+    {"icon", "NAME.svg", "only this icon"},
+    {"frequency", "F", "only this frequency, waves per 10 mm"},
+    {"amplitude", "A", "only this amplitude, mm"},
+    {"overlays", "DIR", "an SVG picture of every glyph that fails a check"},
+};
+
+std::string usage() {
+  return cli::helpText(
+      "vicc_glyphs_pacemod_bench [ICON_DIR] [options]",
+      "Waves every icon of ICON_DIR (default: the vendored MDI icons) for the grid of waveforms, "
+      "frequencies and amplitudes;\ncounts the waves, measures their amplitudes and the new "
+      "crossings (Markdown tables on stdout).\nExit code 0 on success, 1 on an error, 2 on a "
+      "usage error.",
+      kOptionSpecs);
+}
+
+int run(const std::vector<std::string>& args) {
+  const cli::ParsedArguments parsed = cli::parseArguments(args, kOptionSpecs);
+  if (parsed.positional.size() > 1) throw cli::UsageError("more than one ICON_DIR given");
+  const fs::path dir = parsed.positional.empty() ? fs::path(VICC_GLYPHS_DATA_DIR "/icons")
+                                                 : fs::path(parsed.positional[0]);
+  if (!fs::is_directory(dir)) throw cli::UsageError("no directory " + dir.string());
+  const bool quick = parsed.flag("quick");
+  verbose = parsed.flag("verbose");
+  render_glyphs = !parsed.flag("no-render");
+  if (parsed.flag("opencv-labels")) options.feature_transform = FeatureTransform::OpenCvLabels;
+  const std::string only_waveform = parsed.value("waveform");
+  if (!only_waveform.empty() && only_waveform != "sine" && only_waveform != "triangle" &&
+      only_waveform != "sawtooth" && only_waveform != "rectangle") {
+    throw cli::UsageError("unknown --waveform '" + only_waveform + "'");
   }
+  const std::string only_icon = parsed.value("icon");
+  const double only_frequency = parsed.number("frequency", 0.0, 0.01, 100.0);
+  const double only_amplitude = parsed.number("amplitude", -1.0, 0.0, 10.0);
+  overlay_dir = parsed.value("overlays");
   std::vector<fs::path> icons;
   for (const auto& entry : fs::directory_iterator(dir)) {
     if (entry.path().extension() == ".svg" &&
@@ -232,4 +245,10 @@ int main(int argc, char** argv) {
   for (const auto& [name, totals] : by_waveform) printRow(name, totals);
   std::printf("\nload average at the end %s\n", loadAverage().c_str());
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return cli::runTool("vicc_glyphs_pacemod_bench", argc, argv, usage(), run);
 }

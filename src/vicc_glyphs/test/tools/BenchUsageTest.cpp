@@ -1,0 +1,35 @@
+// The glyph bench tools parse their command lines with vicc_common's parser: a bad option is
+// a usage error (exit code 2) naming it, followed by the usage; --help prints the usage.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "run_command.hpp"
+
+namespace {
+
+void expectUsageError(const std::string& tool, const std::string& arguments,
+                      const std::string& expected) {
+  const vicc_test::CommandResult result = vicc_test::runCommand(tool + " " + arguments);
+  EXPECT_EQ(result.exit_code, 2) << arguments << ":\n" << result.output;
+  EXPECT_NE(result.output.find(expected), std::string::npos) << arguments << ":\n" << result.output;
+  EXPECT_NE(result.output.find("usage: "), std::string::npos) << result.output;
+}
+
+TEST(BenchUsage, GlyphBench) {
+  expectUsageError(VICC_GLYPH_BENCH_BINARY, "", "no input given");
+  expectUsageError(VICC_GLYPH_BENCH_BINARY, "--size abc x.svg", "--size");
+  expectUsageError(VICC_GLYPH_BENCH_BINARY, "--tolerance 2 x.svg", "--tolerance");
+  expectUsageError(VICC_GLYPH_BENCH_BINARY, "--repeat 3 x.svg", "--repeat");
+  const vicc_test::CommandResult help =
+      vicc_test::runCommand(std::string(VICC_GLYPH_BENCH_BINARY) + " --help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.output.find("--tolerance E"), std::string::npos) << help.output;
+}
+
+TEST(BenchUsage, ConvergenceHistory) {
+  expectUsageError(VICC_GLYPH_CONVERGENCE_BINARY, "", "no input given");
+  expectUsageError(VICC_GLYPH_CONVERGENCE_BINARY, "--iterations 0 x.svg", "--iterations");
+}
+
+}  // namespace
