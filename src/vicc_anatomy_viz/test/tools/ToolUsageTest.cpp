@@ -5,29 +5,19 @@
 
 #include <string>
 
-#include "run_command.hpp"
+#include "expect_usage_error.hpp"
 
 namespace {
 
 using vicc_test::CommandResult;
-
-CommandResult run(const std::string& command) { return vicc_test::runCommand(command); }
-
-/// `tool arguments` fails with exit code 2, a message naming `expected`, and the usage.
-void expectUsageError(const std::string& tool, const std::string& arguments,
-                      const std::string& expected) {
-  const CommandResult result = run(tool + " " + arguments);
-  EXPECT_EQ(result.exit_code, 2) << arguments << ":\n" << result.output;
-  EXPECT_NE(result.output.find(expected), std::string::npos) << arguments << ":\n" << result.output;
-  EXPECT_NE(result.output.find("usage: "), std::string::npos) << result.output;
-}
+using vicc_test::expectUsageError;
 
 TEST(ToolUsage, AvatarModel) {
   expectUsageError(VICC_AVATAR_MODEL_TOOL, "", "--report or --export DIR is needed");
   expectUsageError(VICC_AVATAR_MODEL_TOOL, "--reprot", "--reprot");
   expectUsageError(VICC_AVATAR_MODEL_TOOL, "--report extra", "unexpected argument 'extra'");
   expectUsageError(VICC_AVATAR_MODEL_TOOL, "--export", "--export");
-  const CommandResult help = run(std::string(VICC_AVATAR_MODEL_TOOL) + " --help");
+  const CommandResult help = vicc_test::runCommand(std::string(VICC_AVATAR_MODEL_TOOL) + " --help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.output.find("--manifest FILE"), std::string::npos) << help.output;
 }

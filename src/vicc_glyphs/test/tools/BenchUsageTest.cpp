@@ -4,17 +4,11 @@
 
 #include <string>
 
-#include "run_command.hpp"
+#include "expect_usage_error.hpp"
 
 namespace {
 
-void expectUsageError(const std::string& tool, const std::string& arguments,
-                      const std::string& expected) {
-  const vicc_test::CommandResult result = vicc_test::runCommand(tool + " " + arguments);
-  EXPECT_EQ(result.exit_code, 2) << arguments << ":\n" << result.output;
-  EXPECT_NE(result.output.find(expected), std::string::npos) << arguments << ":\n" << result.output;
-  EXPECT_NE(result.output.find("usage: "), std::string::npos) << result.output;
-}
+using vicc_test::expectUsageError;
 
 TEST(BenchUsage, GlyphBench) {
   expectUsageError(VICC_GLYPH_BENCH_BINARY, "", "no input given");
