@@ -20,10 +20,17 @@ bool removable(double du, double dv, double dw, double ru, double rv, double rw)
 }  // namespace
 
 std::vector<int> maurerFeatureTransform(const cv::Mat& mask) {
+  std::vector<int> result, row_feature;
+  maurerFeatureTransform(mask, result, row_feature);
+  return result;
+}
+
+void maurerFeatureTransform(const cv::Mat& mask, std::vector<int>& result,
+                            std::vector<int>& row_feature) {
   const int width = mask.cols;
   const int height = mask.rows;
-  // Pass 1: nearest feature column within each row (two sweeps).
-  std::vector<int> row_feature(static_cast<std::size_t>(width) * height, -1);
+  // Pass 1: nearest feature column within each row (two sweeps; every element is written).
+  row_feature.resize(static_cast<std::size_t>(width) * height);
   for (int y = 0; y < height; ++y) {
     const unsigned char* row = mask.ptr<unsigned char>(y);
     int* out = &row_feature[static_cast<std::size_t>(y) * width];
@@ -39,7 +46,7 @@ std::vector<int> maurerFeatureTransform(const cv::Mat& mask) {
     }
   }
   // Pass 2: per column, the lower envelope of the row candidates (partial Voronoi diagram).
-  std::vector<int> result(row_feature.size(), -1);
+  result.assign(row_feature.size(), -1);
   std::vector<int> stack_row(height), stack_col(height);
   for (int x = 0; x < width; ++x) {
     int top = 0;
@@ -66,7 +73,6 @@ std::vector<int> maurerFeatureTransform(const cv::Mat& mask) {
       result[static_cast<std::size_t>(y) * width + x] = stack_row[k] * width + stack_col[k];
     }
   }
-  return result;
 }
 
 std::vector<int> openCvFeatureTransform(const cv::Mat& mask) {

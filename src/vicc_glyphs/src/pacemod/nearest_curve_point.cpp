@@ -4,8 +4,33 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "vicc_glyphs/render/pixel_buffer.hpp"
+
 namespace vicc_glyphs {
 namespace pacemod {
+
+namespace {
+
+// One spare set of buffers per thread: consecutive glyphs (a bench, a server, a design with
+// several modified parts) reuse pages that are already mapped instead of faulting in new ones.
+std::unique_ptr<FieldBuffers>& spareBuffers() {
+  thread_local std::unique_ptr<FieldBuffers> spare;
+  return spare;
+}
+
+std::unique_ptr<FieldBuffers> takeBuffers() {
+  std::unique_ptr<FieldBuffers> buffers = std::move(spareBuffers());
+  return buffers ? std::move(buffers) : std::make_unique<FieldBuffers>();
+}
+
+// Sizes a reused vector; the first time, with huge-page advice (one fault per 2 MiB).
+template <class T>
+void assignReused(std::vector<T>& vector, std::size_t n, const T& value) {
+  render_detail::reserveWithHugePages(vector, n);
+  vector.assign(n, value);
+}
+
+}  // namespace
 
 NearestCurvePoint::NearestCurvePoint(const std::vector<std::vector<Point2>>& polylines, int width,
                                      int height, double grid_scale, FeatureTransform method)
@@ -15,9 +40,13 @@ NearestCurvePoint::NearestCurvePoint(const std::vector<std::vector<Point2>>& pol
   }
   grid_ = cv::Size(static_cast<int>(std::ceil(width * scale_)) + 2 * margin_,
                    static_cast<int>(std::ceil(height * scale_)) + 2 * margin_);
-  cv::Mat mask = cv::Mat::zeros(grid_, CV_8U);
-  samples_.assign(mask.total(), Point2::Zero());
-  std::vector<double> centre_distance(mask.total(), 1e300);
+  buffers_ = takeBuffers();
+  FieldBuffers& b = *buffers_;
+  b.mask.create(grid_, CV_8U);
+  b.mask.setTo(0);
+  const std::size_t cells = b.mask.total();
+  assignReused(b.samples, cells, Point2(Point2::Zero()));
+  assignReused(b.centre_distance, cells, 1e300);
   // Samples at a quarter grid pixel mark every pixel a segment passes through; each pixel keeps
   // the sample nearest to its centre.
   const double step = 0.25 / scale_;
@@ -27,10 +56,10 @@ NearestCurvePoint::NearestCurvePoint(const std::vector<std::vector<Point2>>& pol
     if (ix < 0 || iy < 0 || ix >= grid_.width || iy >= grid_.height) return;
     const int index = iy * grid_.width + ix;
     const double d = std::hypot(gx - ix - 0.5, gy - iy - 0.5);
-    if (d < centre_distance[index]) {
-      centre_distance[index] = d;
-      samples_[index] = p;
-      mask.at<unsigned char>(iy, ix) = 1;
+    if (d < b.centre_distance[index]) {
+      b.centre_distance[index] = d;
+      b.samples[index] = p;
+      b.mask.at<unsigned char>(iy, ix) = 1;
     }
   };
   for (const std::vector<Point2>& line : polylines) {
@@ -42,10 +71,19 @@ NearestCurvePoint::NearestCurvePoint(const std::vector<std::vector<Point2>>& pol
     }
     if (!line.empty()) mark(line.back());
   }
-  if (cv::countNonZero(mask) == 0)
+  if (cv::countNonZero(b.mask) == 0)
     throw std::invalid_argument("NearestCurvePoint: no curve points");
-  feature_ = method == FeatureTransform::Maurer ? maurerFeatureTransform(mask)
-                                                : openCvFeatureTransform(mask);
+  if (method == FeatureTransform::Maurer) {
+    render_detail::reserveWithHugePages(b.feature, cells);
+    render_detail::reserveWithHugePages(b.row_feature, cells);
+    maurerFeatureTransform(b.mask, b.feature, b.row_feature);
+  } else {
+    b.feature = openCvFeatureTransform(b.mask);
+  }
+}
+
+NearestCurvePoint::~NearestCurvePoint() {
+  if (buffers_ && !spareBuffers()) spareBuffers() = std::move(buffers_);
 }
 
 int NearestCurvePoint::featureAt(const Point2& query) const {
@@ -55,10 +93,12 @@ int NearestCurvePoint::featureAt(const Point2& query) const {
   };
   const int ix = cell(query.x() * scale_ + margin_, grid_.width);
   const int iy = cell(query.y() * scale_ + margin_, grid_.height);
-  return feature_[static_cast<std::size_t>(iy) * grid_.width + ix];
+  return buffers_->feature[static_cast<std::size_t>(iy) * grid_.width + ix];
 }
 
-Point2 NearestCurvePoint::nearest(const Point2& query) const { return samples_[featureAt(query)]; }
+Point2 NearestCurvePoint::nearest(const Point2& query) const {
+  return buffers_->samples[featureAt(query)];
+}
 
 }  // namespace pacemod
 }  // namespace vicc_glyphs

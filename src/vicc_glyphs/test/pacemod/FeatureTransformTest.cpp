@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/core.hpp>
 #include <random>
@@ -67,6 +68,36 @@ TEST(FeatureTransformTest, NearestCurvePointReturnsExactSamplesOfTheCurves) {
     EXPECT_NEAR(field.nearest({1e9, -1e9}).y(), 10.0, 1e-12);  // clamped onto the grid
   }
   EXPECT_THROW(NearestCurvePoint({}, 10, 10), std::invalid_argument);
+}
+
+// Fields reuse their thread's buffers: a field built after a larger one (different grid size,
+// curves elsewhere) must not see the earlier field's samples, and a field that is still alive
+// keeps its own buffers while another is built.
+TEST(FeatureTransformTest, ReusedBuffersCarryNothingOverBetweenFields) {
+  const std::vector<std::vector<Point2>> many{
+      {{5, 5}, {195, 5}}, {{5, 95}, {195, 95}}, {{100, 20}, {100, 80}}};
+  const std::vector<std::vector<Point2>> one{{{10, 30}, {50, 30}}};
+  auto expect_only_the_short_line = [](const NearestCurvePoint& field) {
+    for (double x = 0.0; x <= 60.0; x += 7.5) {
+      for (double y = 0.0; y <= 60.0; y += 7.5) {
+        const Point2 p = field.nearest({x, y});
+        EXPECT_NEAR(p.y(), 30.0, 1e-12) << x << "," << y;
+        EXPECT_NEAR(p.x(), std::clamp(x, 10.0, 50.0), 0.6) << x << "," << y;
+      }
+    }
+  };
+  {  // the same grid size: stale marks would land on the very cells queried below
+    const std::vector<std::vector<Point2>> elsewhere{{{2, 2}, {58, 2}}, {{2, 58}, {58, 58}}};
+    const NearestCurvePoint same_grid(elsewhere, 60, 60);
+  }
+  expect_only_the_short_line(NearestCurvePoint(one, 60, 60));
+  { const NearestCurvePoint large(many, 200, 100, 1.5); }
+  const NearestCurvePoint after_large(one, 60, 60);
+  expect_only_the_short_line(after_large);
+  const NearestCurvePoint while_alive(many, 200, 100, 1.5);
+  expect_only_the_short_line(after_large);
+  EXPECT_NEAR(while_alive.nearest({100.0, 50.0}).x(), 100.0, 1e-12);
+  EXPECT_NEAR(while_alive.nearest({150.0, 3.0}).y(), 5.0, 1e-12);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 // of that feature pixel, so distances are exact up to the grid's discretisation (within about
 // one grid pixel of the true nearest point).
 
+#include <memory>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -19,6 +20,17 @@ enum class FeatureTransform {
   Maurer,        ///< Maurer, Qi and Raghavan 2003: exact Euclidean feature transform
 };
 
+/// The per-pixel buffers of one field (about 9 MB for a 512 px glyph). A field takes them from
+/// its thread's spare set and hands them back when it is destroyed: fresh buffers cost ~2,200
+/// page faults (~30 ms on the development VM) per glyph, more than the whole modification.
+struct FieldBuffers {
+  std::vector<Point2> samples;          ///< exact point per feature pixel (index = pixel index)
+  std::vector<int> feature;             ///< per grid pixel: index of the nearest feature pixel
+  std::vector<double> centre_distance;  ///< marking: distance of the kept sample to the centre
+  std::vector<int> row_feature;         ///< Maurer's first pass
+  cv::Mat mask;                         ///< marked grid pixels
+};
+
 class NearestCurvePoint {
  public:
   /// `polylines` in image pixels; the grid covers [0, width) x [0, height) at `grid_scale`
@@ -26,6 +38,9 @@ class NearestCurvePoint {
   /// non-positive size or scale, or when there is no point at all.
   NearestCurvePoint(const std::vector<std::vector<Point2>>& polylines, int width, int height,
                     double grid_scale = 1.0, FeatureTransform method = FeatureTransform::Maurer);
+  ~NearestCurvePoint();
+  NearestCurvePoint(const NearestCurvePoint&) = delete;
+  NearestCurvePoint& operator=(const NearestCurvePoint&) = delete;
 
   /// Nearest curve sample to `query` (queries outside the grid are clamped onto it).
   Point2 nearest(const Point2& query) const;
@@ -38,14 +53,17 @@ class NearestCurvePoint {
   double scale_;
   int margin_;
   cv::Size grid_;
-  std::vector<Point2> samples_;  ///< exact point per feature pixel (index = pixel index)
-  std::vector<int> feature_;     ///< per grid pixel: index of the nearest feature pixel
+  std::unique_ptr<FieldBuffers> buffers_;
 };
 
 /// The exact Euclidean feature transform of Maurer et al. 2003: for a CV_8U `mask` (non-zero =
 /// feature) returns, per pixel (row-major), the row-major index of a nearest feature pixel,
 /// or -1 everywhere when there is none.
 std::vector<int> maurerFeatureTransform(const cv::Mat& mask);
+/// The same into `result`, with `row_feature` as scratch (both keep their storage when they
+/// have the room: no allocation for a repeated grid size).
+void maurerFeatureTransform(const cv::Mat& mask, std::vector<int>& result,
+                            std::vector<int>& row_feature);
 
 /// The same from cv::distanceTransform's pixel labels (approximate 5x5 mask distances).
 std::vector<int> openCvFeatureTransform(const cv::Mat& mask);
