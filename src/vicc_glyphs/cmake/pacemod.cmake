@@ -69,6 +69,7 @@ if(CATKIN_ENABLE_TESTING)
     test/pacemod/ContourWavesTest.cpp
     test/pacemod/OffsetContourTest.cpp
     test/pacemod/PolylineTest.cpp
+    test/pacemod/PolygonCrossingsTest.cpp
   )
   target_compile_options(vicc_glyphs_pacemod_test PRIVATE ${VICC_WARNINGS})
   target_compile_definitions(vicc_glyphs_pacemod_test PRIVATE

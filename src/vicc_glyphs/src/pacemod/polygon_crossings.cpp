@@ -2,8 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
-#include <unordered_map>
+#include <tuple>
 #include <utility>
 
 namespace vicc_glyphs {
@@ -19,53 +18,89 @@ bool properlyCross(const Point2& a, const Point2& b, const Point2& c, const Poin
 }
 
 // Neighbouring segments of one polyline share a point; so do the first and last of a closed one.
-bool adjacent(const Polyline& line, int i, int j) {
-  const int last = static_cast<int>(line.size()) - 2;
+bool adjacent(int segments, bool closed, int i, int j) {
   const int gap = std::abs(i - j);
-  const bool closed = (line.front() - line.back()).norm() < 1e-9;
-  return gap <= 1 || (closed && gap == last);
+  return gap <= 1 || (closed && gap == segments - 1);
 }
+
+struct CellEntry {
+  long long cell;
+  SegmentRef segment;
+  Point2 lo, hi;  ///< the segment's bounding box
+};
 
 long long cellKey(long long x, long long y) { return (x << 32) ^ (y & 0xffffffffLL); }
 
-}  // namespace
-
-std::vector<Crossing> findCrossings(const std::vector<Polyline>& lines, double cell) {
-  std::unordered_map<long long, std::vector<SegmentRef>> buckets;
+// Every segment once per grid cell its bounding box touches, sorted by cell.
+std::vector<CellEntry> bucketSegments(const std::vector<Polyline>& lines, double cell) {
+  std::vector<CellEntry> entries;
   for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
     for (int i = 0; i + 1 < static_cast<int>(lines[l].size()); ++i) {
-      const Point2 lo = lines[l][i].cwiseMin(lines[l][i + 1]) / cell;
-      const Point2 hi = lines[l][i].cwiseMax(lines[l][i + 1]) / cell;
+      const Point2 box_lo = lines[l][i].cwiseMin(lines[l][i + 1]);
+      const Point2 box_hi = lines[l][i].cwiseMax(lines[l][i + 1]);
+      const Point2 lo = box_lo / cell, hi = box_hi / cell;
       if (!lo.allFinite() || !hi.allFinite()) continue;
       for (long long x = std::floor(lo.x()); x <= std::floor(hi.x()); ++x) {
         for (long long y = std::floor(lo.y()); y <= std::floor(hi.y()); ++y) {
-          buckets[cellKey(x, y)].push_back({l, i});
+          entries.push_back({cellKey(x, y), {l, i}, box_lo, box_hi});
         }
       }
     }
   }
-  std::set<std::pair<std::pair<int, int>, std::pair<int, int>>> seen;
+  std::sort(entries.begin(), entries.end(),
+            [](const CellEntry& a, const CellEntry& b) { return a.cell < b.cell; });
+  return entries;
+}
+
+// A crossing pair shares every cell that both bounding boxes touch; it is reported only in
+// the cell of its crossing point (clamped into both boxes against round-off), so exactly once.
+bool ownedByCell(const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1,
+                 double cell, long long key) {
+  const Point2 da = a1 - a0, db = b1 - b0;
+  const double t = cross(b0 - a0, db) / cross(da, db);
+  const Point2 lo = a0.cwiseMin(a1).cwiseMax(b0.cwiseMin(b1));
+  const Point2 hi = a0.cwiseMax(a1).cwiseMin(b0.cwiseMax(b1));
+  const Point2 point = (a0 + t * da).cwiseMax(lo).cwiseMin(hi) / cell;
+  return cellKey(std::floor(point.x()), std::floor(point.y())) == key;
+}
+
+}  // namespace
+
+std::vector<Crossing> findCrossings(const std::vector<Polyline>& lines, double cell) {
+  std::vector<char> closed(lines.size());
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    closed[l] = lines[l].size() > 1 && (lines[l].front() - lines[l].back()).norm() < 1e-9;
+  }
+  const std::vector<CellEntry> entries = bucketSegments(lines, cell);
   std::vector<Crossing> crossings;
-  for (const auto& bucket : buckets) {
-    const std::vector<SegmentRef>& s = bucket.second;
-    for (std::size_t a = 0; a < s.size(); ++a) {
-      for (std::size_t b = a + 1; b < s.size(); ++b) {
-        const SegmentRef& p = s[a];
-        const SegmentRef& q = s[b];
-        if (p.line == q.line && adjacent(lines[p.line], p.segment, q.segment)) continue;
+  for (std::size_t begin = 0, end = 0; begin < entries.size(); begin = end) {
+    while (end < entries.size() && entries[end].cell == entries[begin].cell) ++end;
+    for (std::size_t a = begin; a < end; ++a) {
+      for (std::size_t b = a + 1; b < end; ++b) {
+        // Densely sampled curves put many short segments into a cell: most pairs are apart.
+        if ((entries[a].lo.array() > entries[b].hi.array()).any() ||
+            (entries[b].lo.array() > entries[a].hi.array()).any()) {
+          continue;
+        }
+        // Canonical order, so that the crossing point is computed the same in every cell.
+        SegmentRef p = entries[a].segment, q = entries[b].segment;
+        if (std::tie(q.line, q.segment) < std::tie(p.line, p.segment)) std::swap(p, q);
+        const int segments = static_cast<int>(lines[p.line].size()) - 1;
+        if (p.line == q.line && adjacent(segments, closed[p.line], p.segment, q.segment)) continue;
         const Point2& a0 = lines[p.line][p.segment];
         const Point2& a1 = lines[p.line][p.segment + 1];
         const Point2& b0 = lines[q.line][q.segment];
         const Point2& b1 = lines[q.line][q.segment + 1];
         if (!properlyCross(a0, a1, b0, b1)) continue;
-        // A crossing pair shares several buckets; report it once.
-        const std::pair<int, int> ka{p.line, p.segment}, kb{q.line, q.segment};
-        if (seen.insert({std::min(ka, kb), std::max(ka, kb)}).second) {
-          crossings.push_back({p, q});
-        }
+        if (ownedByCell(a0, a1, b0, b1, cell, entries[begin].cell)) crossings.push_back({p, q});
       }
     }
   }
+  // A deterministic order that does not depend on the bucketing.
+  std::sort(crossings.begin(), crossings.end(), [](const Crossing& x, const Crossing& y) {
+    return std::tie(x.a.line, x.a.segment, x.b.line, x.b.segment) <
+           std::tie(y.a.line, y.a.segment, y.b.line, y.b.segment);
+  });
   return crossings;
 }
 

@@ -1,0 +1,82 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+#include <tuple>
+
+#include "vicc_glyphs/pacemod/polygon_crossings.hpp"
+
+namespace vicc_glyphs {
+namespace pacemod {
+namespace {
+
+using PairKey = std::tuple<int, int, int, int>;
+
+PairKey key(SegmentRef p, SegmentRef q) {
+  if (std::tie(q.line, q.segment) < std::tie(p.line, p.segment)) std::swap(p, q);
+  return {p.line, p.segment, q.line, q.segment};
+}
+
+double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// Every pair of segments, checked directly (the definition findCrossings must match).
+std::set<PairKey> exhaustiveCrossings(const std::vector<Polyline>& lines) {
+  std::set<PairKey> found;
+  for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
+    const int segments = static_cast<int>(lines[l].size()) - 1;
+    const bool closed = (lines[l].front() - lines[l].back()).norm() < 1e-9;
+    for (int m = l; m < static_cast<int>(lines.size()); ++m) {
+      for (int i = 0; i < segments; ++i) {
+        for (int j = (m == l ? i + 1 : 0); j + 1 < static_cast<int>(lines[m].size()); ++j) {
+          if (m == l && (j - i <= 1 || (closed && j - i == segments - 1))) continue;
+          const Point2 &a = lines[l][i], &b = lines[l][i + 1];
+          const Point2 &c = lines[m][j], &d = lines[m][j + 1];
+          if (cross(b - a, c - a) * cross(b - a, d - a) < 0.0 &&
+              cross(d - c, a - c) * cross(d - c, b - c) < 0.0) {
+            found.insert({l, i, m, j});
+          }
+        }
+      }
+    }
+  }
+  return found;
+}
+
+// Random closed zigzags: many crossings within and between lines, some exactly on cell
+// borders (integer coordinates with the default 8 px cell).
+TEST(PolygonCrossingsTest, FindsExactlyTheCrossingsOfTheExhaustiveCheckOnce) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(0.0, 64.0);
+  for (int round = 0; round < 20; ++round) {
+    std::vector<Polyline> lines(3);
+    for (Polyline& line : lines) {
+      for (int k = 0; k < 25; ++k) {
+        const double x = coordinate(random), y = coordinate(random);
+        line.push_back(round % 2 ? Point2(std::round(x), std::round(y)) : Point2(x, y));
+      }
+      line.push_back(line.front());
+    }
+    const std::vector<Crossing> crossings = findCrossings(lines);
+    std::set<PairKey> reported;
+    for (const Crossing& c : crossings) {
+      EXPECT_TRUE(reported.insert(key(c.a, c.b)).second) << "reported twice";
+    }
+    EXPECT_EQ(reported, exhaustiveCrossings(lines)) << "round " << round;
+    EXPECT_GT(reported.size(), 50u);
+    EXPECT_EQ(findCrossings(lines, 3.0).size(), crossings.size());
+  }
+}
+
+TEST(PolygonCrossingsTest, NeighboursAndTouchingEndsDoNotCount) {
+  const Polyline square{{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}};
+  EXPECT_TRUE(findCrossings({square}).empty());
+  const Polyline bow{{0, 0}, {10, 10}, {10, 0}, {0, 10}, {0, 0}};
+  ASSERT_EQ(findCrossings({bow}).size(), 1u);
+  EXPECT_EQ(findCrossings({bow})[0].a.segment, 0);
+  EXPECT_EQ(findCrossings({bow})[0].b.segment, 2);
+}
+
+}  // namespace
+}  // namespace pacemod
+}  // namespace vicc_glyphs
