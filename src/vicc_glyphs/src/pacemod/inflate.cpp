@@ -5,6 +5,7 @@
 
 #include "vicc_glyphs/pacemod/offset_contour.hpp"
 #include "vicc_glyphs/pacemod/polyline.hpp"
+#include "vicc_glyphs/pacemod/wave_spec.hpp"
 
 namespace vicc_glyphs {
 namespace pacemod {
@@ -34,6 +35,8 @@ std::vector<CurveInflateReport> inflateCurves(DiffusionCurveImage& image,
   if (!std::isfinite(glyph_size_mm) || !(glyph_size_mm > 0.0) || image.width < 1) {
     throw std::invalid_argument("glyph_size_mm must be a finite number > 0");
   }
+  const std::string too_large = checkDisplacement("inflate offset", offset_mm, glyph_size_mm);
+  if (!too_large.empty()) throw std::invalid_argument(too_large);
   const double px_per_mm = image.width / glyph_size_mm;
   std::vector<CurveInflateReport> reports;
   for (int index : curves) {

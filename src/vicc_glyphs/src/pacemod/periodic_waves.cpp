@@ -46,6 +46,8 @@ void checkArguments(const DiffusionCurveImage& image, const std::vector<int>& cu
   if (!std::isfinite(glyph_size_mm) || !(glyph_size_mm > 0.0)) {
     throw std::invalid_argument("glyph_size_mm must be a finite number > 0");
   }
+  const std::string too_large = checkDisplacement("amplitude_mm", spec.amplitude_mm, glyph_size_mm);
+  if (!too_large.empty()) throw std::invalid_argument(too_large);
   if (image.width < 1) throw std::invalid_argument("image has no width");
   for (int index : curves) {
     if (index < 0 || index >= static_cast<int>(image.curves.size())) {

@@ -1,6 +1,7 @@
 #include "vicc_glyphs/pacemod/wave_layout.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace vicc_glyphs {
@@ -110,6 +111,8 @@ std::vector<double> knotVector(const WaveLayout& layout, bool single_knots) {
 int wholeWaveCount(double waves_per_unit, double length) {
   const double waves = waves_per_unit * length;
   if (!std::isfinite(waves) || waves < 0.5) return 0;
+  // Saturates instead of overflowing: callers reject counts whose period is below a pixel.
+  if (waves >= std::numeric_limits<int>::max()) return std::numeric_limits<int>::max();
   return static_cast<int>(std::lround(waves));
 }
 

@@ -1,6 +1,7 @@
 #include "vicc_glyphs/pacemod/wave_spec.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace vicc_glyphs {
 namespace pacemod {
@@ -35,6 +36,15 @@ std::string validate(const WaveSpec& spec) {
     return "amplitude_mm must be a finite number >= 0";
   }
   return "";
+}
+
+std::string checkDisplacement(const char* name, double value_mm, double glyph_size_mm) {
+  const double limit = kMaxDisplacementShareOfGlyph * glyph_size_mm;
+  if (std::abs(value_mm) <= limit) return "";
+  std::ostringstream message;
+  message << name << " " << value_mm << " mm is larger than a quarter of the glyph's width ("
+          << limit << " mm of " << glyph_size_mm << " mm)";
+  return message.str();
 }
 
 }  // namespace pacemod

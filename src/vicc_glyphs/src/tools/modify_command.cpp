@@ -42,6 +42,17 @@ ModifyOutcome modify(const ModifyRequest& request, DiffusionCurveImage& image) {
   return outcome;
 }
 
+// A curve a modification left as it was must not pass unnoticed: the picture would look like a
+// modified glyph that encodes nothing (or the lowest level).
+template <class Reports>
+void warnSkipped(const Reports& reports, const char* what, std::ostream& err) {
+  for (const auto& report : reports) {
+    if (report.skipped.empty()) continue;
+    err << "vicc_glyph modify: warning: curve " << report.curve << ": " << what
+        << " not applied: " << report.skipped << "\n";
+  }
+}
+
 void writeReport(const ModifyRequest& request, const ModifyOutcome& outcome) {
   std::ofstream file(request.report);
   file << modifyReportJson(request, outcome).dump(2) << "\n";
@@ -66,6 +77,9 @@ int runModifyCommand(const std::vector<std::string>& args, std::ostream& out, st
   try {
     DiffusionCurveImage image = loadDiffusionCurves(request.input, request.size);
     ModifyOutcome outcome = modify(request, image);
+    warnSkipped(outcome.inflated, "inflation", err);
+    warnSkipped(outcome.waves, "waves", err);
+    warnSkipped(outcome.dashes, "dashes", err);
     const std::string problem = validate(image);
     if (!problem.empty()) throw std::runtime_error("modified image is invalid: " + problem);
     if (!request.dci.empty()) writeOrzanXml(image, request.dci);

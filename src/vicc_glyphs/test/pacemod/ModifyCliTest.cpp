@@ -108,6 +108,12 @@ TEST_F(ModifyCliTest, BadParametersExitWithAMessageNamingThem) {
       {"--curves 1,a", 2, "--curves"},
       {"--curves 9 --frequency 3 --amplitude 0.5", 1, "curve index 9"},
       {"--frequency 100000 --amplitude 0.5", 1, "waves_per_mm"},
+      // Used to overflow the wave count and leave the icon unmodified with exit code 0.
+      {"--frequency 1e300 --amplitude 0.5", 1, "waves_per_mm"},
+      // Used to hang in the polygon check's grid (a 10^7 px wave).
+      {"--frequency 3 --amplitude 1e6", 1, "amplitude_mm"},
+      {"--inflate 1e9", 1, "inflate offset"},
+      {"--inflate -13", 1, "inflate offset"},
   };
   for (const Case& c : cases) {
     const ToolRun r = run(base + c.args);
@@ -117,6 +123,21 @@ TEST_F(ModifyCliTest, BadParametersExitWithAMessageNamingThem) {
   const ToolRun missing = run(kIcons + "nope.svg --out " + path("x.png"));
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.err.find("nope.svg"), std::string::npos);
+}
+
+// A modification a curve cannot take leaves it as it was; the user is told so.
+TEST_F(ModifyCliTest, SkippedModificationsAreWarnedAbout) {
+  const ToolRun r = run(kIcons + "heart.svg --out " + path("x.png") +
+                        " --size 64 --frequency 1e-9 --amplitude 0.5");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: curve 0: waves not applied: fewer than half a wave"),
+            std::string::npos)
+      << r.err;
+  const ToolRun shrunk =
+      run(kIcons + "lightning-bolt.svg --out " + path("y.png") + " --size 64 --inflate -8");
+  EXPECT_EQ(shrunk.exit_code, 0) << shrunk.err;
+  EXPECT_NE(shrunk.err.find("inflation not applied: nothing is left"), std::string::npos)
+      << shrunk.err;
 }
 
 TEST_F(ModifyCliTest, HelpSucceeds) { EXPECT_EQ(run("--help").exit_code, 0); }

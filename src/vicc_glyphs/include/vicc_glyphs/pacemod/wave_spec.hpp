@@ -20,6 +20,15 @@ struct WaveSpec {
 std::optional<Waveform> parseWaveform(const std::string& name);
 std::string waveformName(Waveform waveform);
 
+/// The largest wave amplitude or inflation offset, as a share of the glyph's width. The
+/// perception model's levels stay far below it (1.2 mm of 50 mm); beyond it a modification
+/// would not draw the icon any more (and the polygon check's grid would grow without bound).
+inline constexpr double kMaxDisplacementShareOfGlyph = 0.25;
+
+/// Empty when the displacement `value_mm` of the field `name` is within
+/// kMaxDisplacementShareOfGlyph of `glyph_size_mm`, else a message naming both.
+std::string checkDisplacement(const char* name, double value_mm, double glyph_size_mm);
+
 /// Empty when valid, else a message naming the offending field ("waves_per_mm", "amplitude_mm").
 std::string validate(const WaveSpec& spec);
 
