@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
 
@@ -23,45 +25,85 @@ bool adjacent(int segments, bool closed, int i, int j) {
   return gap <= 1 || (closed && gap == segments - 1);
 }
 
-struct CellEntry {
-  long long cell;
+struct SegmentBox {
   SegmentRef segment;
-  Point2 lo, hi;  ///< the segment's bounding box
+  Point2 lo, hi;
 };
 
-long long cellKey(long long x, long long y) { return (x << 32) ^ (y & 0xffffffffLL); }
+// Segments bucketed by the grid cells their bounding boxes touch (a counting sort: cell c
+// holds boxes[order[start[c]] ... boxes[order[start[c + 1] - 1]]).
+struct SegmentGrid {
+  static constexpr double kMaxCells = 1 << 22;
+  std::vector<SegmentBox> boxes;
+  std::vector<int> start, order;
+  Point2 origin = Point2::Zero();
+  double cell = 1.0;
+  long long nx = 0, ny = 0;
 
-// Every segment once per grid cell its bounding box touches, sorted by cell.
-std::vector<CellEntry> bucketSegments(const std::vector<Polyline>& lines, double cell) {
-  std::vector<CellEntry> entries;
-  for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
-    for (int i = 0; i + 1 < static_cast<int>(lines[l].size()); ++i) {
-      const Point2 box_lo = lines[l][i].cwiseMin(lines[l][i + 1]);
-      const Point2 box_hi = lines[l][i].cwiseMax(lines[l][i + 1]);
-      const Point2 lo = box_lo / cell, hi = box_hi / cell;
-      if (!lo.allFinite() || !hi.allFinite()) continue;
-      for (long long x = std::floor(lo.x()); x <= std::floor(hi.x()); ++x) {
-        for (long long y = std::floor(lo.y()); y <= std::floor(hi.y()); ++y) {
-          entries.push_back({cellKey(x, y), {l, i}, box_lo, box_hi});
-        }
+  long long column(double x) const {
+    return std::clamp<long long>(std::floor((x - origin.x()) / cell), 0, nx - 1);
+  }
+  long long row(double y) const {
+    return std::clamp<long long>(std::floor((y - origin.y()) / cell), 0, ny - 1);
+  }
+
+  template <class Visit>
+  void forEachCell(const SegmentBox& box, Visit&& visit) const {
+    for (long long y = row(box.lo.y()), y_end = row(box.hi.y()); y <= y_end; ++y) {
+      for (long long x = column(box.lo.x()), x_end = column(box.hi.x()); x <= x_end; ++x) {
+        visit(y * nx + x);
       }
     }
   }
-  std::sort(entries.begin(), entries.end(),
-            [](const CellEntry& a, const CellEntry& b) { return a.cell < b.cell; });
-  return entries;
-}
+
+  SegmentGrid(const std::vector<Polyline>& lines, double min_cell) {
+    if (!(min_cell > 0.0) || !std::isfinite(min_cell)) {
+      throw std::invalid_argument("findCrossings: the cell size must be a finite number > 0");
+    }
+    Point2 lo = Point2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
+      for (int i = 0; i + 1 < static_cast<int>(lines[l].size()); ++i) {
+        const SegmentBox box{
+            {l, i}, lines[l][i].cwiseMin(lines[l][i + 1]), lines[l][i].cwiseMax(lines[l][i + 1])};
+        if (!box.lo.allFinite() || !box.hi.allFinite()) continue;
+        boxes.push_back(box);
+        lo = lo.cwiseMin(box.lo);
+        hi = hi.cwiseMax(box.hi);
+      }
+    }
+    if (boxes.empty()) return;
+    origin = lo;
+    if (!(hi - lo).allFinite()) throw std::invalid_argument("findCrossings: coordinates too large");
+    // A coarser grid finds the same crossings: only the number of pairs tried grows.
+    cell = min_cell;
+    const auto cells = [&](double size) {
+      return (std::floor((hi.x() - lo.x()) / size) + 1.0) *
+             (std::floor((hi.y() - lo.y()) / size) + 1.0);
+    };
+    while (!(cells(cell) <= kMaxCells)) cell *= 2.0;
+    nx = static_cast<long long>(std::floor((hi.x() - lo.x()) / cell)) + 1;
+    ny = static_cast<long long>(std::floor((hi.y() - lo.y()) / cell)) + 1;
+    start.assign(static_cast<std::size_t>(nx * ny) + 1, 0);
+    for (const SegmentBox& box : boxes) forEachCell(box, [&](long long c) { ++start[c + 1]; });
+    for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+    order.resize(start.back());
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (int b = 0; b < static_cast<int>(boxes.size()); ++b) {
+      forEachCell(boxes[b], [&](long long c) { order[fill[c]++] = b; });
+    }
+  }
+};
 
 // A crossing pair shares every cell that both bounding boxes touch; it is reported only in
 // the cell of its crossing point (clamped into both boxes against round-off), so exactly once.
-bool ownedByCell(const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1,
-                 double cell, long long key) {
+bool ownedByCell(const SegmentGrid& grid, const Point2& a0, const Point2& a1, const Point2& b0,
+                 const Point2& b1, long long cell) {
   const Point2 da = a1 - a0, db = b1 - b0;
   const double t = cross(b0 - a0, db) / cross(da, db);
   const Point2 lo = a0.cwiseMin(a1).cwiseMax(b0.cwiseMin(b1));
   const Point2 hi = a0.cwiseMax(a1).cwiseMin(b0.cwiseMax(b1));
-  const Point2 point = (a0 + t * da).cwiseMax(lo).cwiseMin(hi) / cell;
-  return cellKey(std::floor(point.x()), std::floor(point.y())) == key;
+  const Point2 point = (a0 + t * da).cwiseMax(lo).cwiseMin(hi);
+  return grid.row(point.y()) * grid.nx + grid.column(point.x()) == cell;
 }
 
 }  // namespace
@@ -71,19 +113,20 @@ std::vector<Crossing> findCrossings(const std::vector<Polyline>& lines, double c
   for (std::size_t l = 0; l < lines.size(); ++l) {
     closed[l] = lines[l].size() > 1 && (lines[l].front() - lines[l].back()).norm() < 1e-9;
   }
-  const std::vector<CellEntry> entries = bucketSegments(lines, cell);
+  const SegmentGrid grid(lines, cell);
   std::vector<Crossing> crossings;
-  for (std::size_t begin = 0, end = 0; begin < entries.size(); begin = end) {
-    while (end < entries.size() && entries[end].cell == entries[begin].cell) ++end;
-    for (std::size_t a = begin; a < end; ++a) {
-      for (std::size_t b = a + 1; b < end; ++b) {
+  for (long long c = 0; c + 1 < static_cast<long long>(grid.start.size()); ++c) {
+    for (int a = grid.start[c]; a < grid.start[c + 1]; ++a) {
+      const SegmentBox& box_a = grid.boxes[grid.order[a]];
+      for (int b = a + 1; b < grid.start[c + 1]; ++b) {
+        const SegmentBox& box_b = grid.boxes[grid.order[b]];
         // Densely sampled curves put many short segments into a cell: most pairs are apart.
-        if ((entries[a].lo.array() > entries[b].hi.array()).any() ||
-            (entries[b].lo.array() > entries[a].hi.array()).any()) {
+        if ((box_a.lo.array() > box_b.hi.array()).any() ||
+            (box_b.lo.array() > box_a.hi.array()).any()) {
           continue;
         }
         // Canonical order, so that the crossing point is computed the same in every cell.
-        SegmentRef p = entries[a].segment, q = entries[b].segment;
+        SegmentRef p = box_a.segment, q = box_b.segment;
         if (std::tie(q.line, q.segment) < std::tie(p.line, p.segment)) std::swap(p, q);
         const int segments = static_cast<int>(lines[p.line].size()) - 1;
         if (p.line == q.line && adjacent(segments, closed[p.line], p.segment, q.segment)) continue;
@@ -92,7 +135,7 @@ std::vector<Crossing> findCrossings(const std::vector<Polyline>& lines, double c
         const Point2& b0 = lines[q.line][q.segment];
         const Point2& b1 = lines[q.line][q.segment + 1];
         if (!properlyCross(a0, a1, b0, b1)) continue;
-        if (ownedByCell(a0, a1, b0, b1, cell, entries[begin].cell)) crossings.push_back({p, q});
+        if (ownedByCell(grid, a0, a1, b0, b1, c)) crossings.push_back({p, q});
       }
     }
   }

@@ -77,6 +77,17 @@ TEST(PolygonCrossingsTest, NeighboursAndTouchingEndsDoNotCount) {
   EXPECT_EQ(findCrossings({bow})[0].b.segment, 2);
 }
 
+// A far-flung polyline (e.g. a huge wave amplitude) coarsens the grid instead of allocating
+// or visiting ~10^13 cells.
+TEST(PolygonCrossingsTest, HugeExtentsCoarsenTheGrid) {
+  const Polyline far{{0, 0}, {1e7, 1e7}, {1e7, 0}, {0, 1e7}, {0, 0}};
+  const std::vector<Crossing> crossings = findCrossings({far}, 0.5);
+  ASSERT_EQ(crossings.size(), 1u);
+  EXPECT_EQ(crossings[0].b.segment, 2);
+  EXPECT_THROW(findCrossings({far}, 0.0), std::invalid_argument);
+  EXPECT_THROW(findCrossings({{{-1e308, 0}, {1e308, 1}}}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace pacemod
 }  // namespace vicc_glyphs

@@ -20,7 +20,10 @@ struct Crossing {
 };
 
 /// Every pair of segments that cross properly (touching end points and the neighbours within one
-/// closed polyline do not count), within one polyline and between different ones.
+/// closed polyline do not count), within one polyline and between different ones, each once,
+/// ordered by (a, b) with a < b. `cell` is the grid's smallest cell in the polylines' units; a
+/// coarser one is used where a finer grid would exceed 4M cells (same result, more pairs tried).
+/// Throws std::invalid_argument for a cell that is not > 0 or coordinates whose extent overflows.
 std::vector<Crossing> findCrossings(const std::vector<Polyline>& lines, double cell = 8.0);
 
 }  // namespace pacemod
