@@ -62,6 +62,19 @@ pacemod::Waveform pacemodWaveform(perception::Waveform waveform) {
 
 // Geometric frequency and amplitude on the same curves form one wave; alone, the other wave
 // parameter is the encoding's fixed value.
+// A value no selected curve can show would pass for another level (a glyph without waves reads
+// as the lowest frequency): the design's modification must land on at least one curve.
+template <class Reports>
+void requireShown(const Reports& reports, const std::string& what) {
+  if (reports.empty()) return;
+  for (const auto& report : reports) {
+    if (report.skipped.empty()) return;
+  }
+  throw std::invalid_argument(what + " cannot be drawn on any selected curve (curve " +
+                              std::to_string(reports.front().curve) + ": " +
+                              reports.front().skipped + ")");
+}
+
 void applyWaveEncodings(DiffusionCurveImage& image, const std::vector<Active>& active,
                         const GlyphDesign& design, const perception::PerceptionModel& model) {
   std::set<size_t> used;
@@ -94,7 +107,10 @@ void applyWaveEncodings(DiffusionCurveImage& image, const std::vector<Active>& a
         used.insert(j);
       }
     }
-    if (!unmodified) pacemod::applyWaves(image, curves, spec, design.size_mm);
+    if (!unmodified) {
+      requireShown(pacemod::applyWaves(image, curves, spec, design.size_mm),
+                   "design " + design.name + ": the waves");
+    }
   }
 }
 
@@ -150,14 +166,19 @@ void applyDashEncoding(DiffusionCurveImage& image, const Active& active,
                        const std::vector<int>& curves, const Color& color,
                        const GlyphDesign& design, const perception::PerceptionModel& model) {
   if (modelLevel(active) < 0) return;
+  std::vector<pacemod::CurveDashReport> reports;
   for (int index : curves) {
     const pacemod::ChainArcLength arc(image.curves[static_cast<size_t>(index)]);
     const double length_mm = arc.totalLength() / pixelsPerMm(image, design);
     pacemod::DashSpec spec;
     spec.color = color;
     spec.count = dashCount(length_mm, active, modelLevel(active), design, model);
-    pacemod::applyDashes(image, {index}, spec, design.size_mm);
+    for (const pacemod::CurveDashReport& report :
+         pacemod::applyDashes(image, {index}, spec, design.size_mm)) {
+      reports.push_back(report);
+    }
   }
+  requireShown(reports, "design " + design.name + ": the dashes");
 }
 
 std::vector<int> without(const std::vector<int>& curves, const std::set<int>& hidden) {
@@ -241,7 +262,10 @@ DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>
     const double offset = a.encoding->numbers[static_cast<size_t>(a.level)];
     const std::vector<int> curves =
         without(pacemod::selectCurves(image, a.encoding->curves), hidden);
-    if (offset != 0.0) pacemod::inflateCurves(image, curves, offset, design.size_mm);
+    if (offset != 0.0) {
+      requireShown(pacemod::inflateCurves(image, curves, offset, design.size_mm),
+                   "design " + design.name + ": the inflation");
+    }
   }
   applyWaveEncodings(image, active, design, model);
   applyGradientEncodings(image, active, hidden, design);

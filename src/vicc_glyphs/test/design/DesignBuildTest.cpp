@@ -212,3 +212,24 @@ TEST(DesignBuild, BandIsDarkerForARiseAndBrighterForAFall) {
   EXPECT_LT(bandColor(15).maxCoeff(), 0.95 * fill.maxCoeff());
   EXPECT_GT(bandColor(-15).maxCoeff(), 1.05 * fill.maxCoeff());
 }
+
+// A level whose modification no selected curve can take would look like another level (here
+// drops shrunk to nothing would keep their size): building that glyph is an error.
+TEST(DesignBuild, AModificationNoCurveCanTakeIsAnError) {
+  GlyphDesign design = shipped("rain_forecast_sine");
+  for (DesignVariable& variable : design.variables) {
+    for (Encoding& encoding : variable.encodings) {
+      if (encoding.channel == Channel::Inflate) encoding.numbers.front() = -12.0;
+    }
+  }
+  const std::vector<int> light = design.levelsFor({{"probability", 95}, {"amount", 1}});
+  try {
+    buildGlyph(design, light, model());
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("the inflation cannot be drawn"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_NO_THROW(
+      buildGlyph(design, design.levelsFor({{"probability", 95}, {"amount", 5}}), model()));
+}

@@ -160,8 +160,12 @@ TEST(PacemodGlyphTest, InflatingGrowsTheRegionByTheOffset) {
   const double d = 256 / 50.0;
   EXPECT_NEAR(after, before + perimeter * d + M_PI * d * d, 0.03 * after);
   EXPECT_EQ(validate(image), "");
-  const std::vector<CurveInflateReport> gone = inflateCurves(image, {0}, -40.0, 50.0);
+  DiffusionCurveImage original = loadDiffusionCurves(kIcons + "water.svg", 256);
+  const std::vector<CurveInflateReport> gone = inflateCurves(original, {0}, -12.5, 50.0);
   EXPECT_FALSE(gone[0].skipped.empty());
+  // Beyond a quarter of the glyph's width an offset is refused before anything is changed.
+  EXPECT_THROW(inflateCurves(image, {0}, -40.0, 50.0), std::invalid_argument);
+  EXPECT_THROW(inflateCurves(image, {0}, 12.6, 50.0), std::invalid_argument);
 }
 
 }  // namespace
