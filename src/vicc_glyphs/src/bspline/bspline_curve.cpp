@@ -1,6 +1,7 @@
 #include "vicc_glyphs/bspline/bspline_curve.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -20,8 +21,8 @@ namespace {
 // Templated so that the same code yields curve points (Point2) and basis functions (a vector of
 // unit coefficients).
 template <typename Value>
-Value evaluateOnSpan(const std::vector<double>& t, int p, int span, std::vector<Value> local,
-                     double u, int order) {
+Value evaluateOnSpan(const std::vector<double>& t, int p, int span, Value* local, double u,
+                     int order) {
   if (order > p) return Value(local[0] * 0.0);
   for (int r = 1; r <= order; ++r) {
     for (int j = p; j >= r; --j) {
@@ -130,7 +131,8 @@ int BSplineCurve::findSpan(double u) const {
 }
 
 int BSplineCurve::multiplicity(double u) const {
-  return static_cast<int>(std::count(knots_.begin(), knots_.end(), u));
+  const auto range = std::equal_range(knots_.begin(), knots_.end(), u);  // knots are sorted
+  return static_cast<int>(range.second - range.first);
 }
 
 std::vector<double> BSplineCurve::breakpoints() const {
@@ -147,9 +149,16 @@ Point2 BSplineCurve::derivativeAt(double u, int order) const {
   if (order < 0) fail("derivative order must not be negative");
   const double v = clampToDomain(u);
   const int span = findSpan(v);
-  std::vector<Point2> local(control_points_.begin() + (span - degree_),
-                            control_points_.begin() + (span + 1));
-  return evaluateOnSpan(knots_, degree_, span, std::move(local), v, order);
+  const auto first = control_points_.begin() + (span - degree_);
+  // Curves are evaluated millions of times per glyph: no heap allocation for usual degrees.
+  constexpr int kStackDegree = 7;
+  if (degree_ <= kStackDegree) {
+    std::array<Point2, kStackDegree + 1> local;
+    std::copy(first, first + degree_ + 1, local.begin());
+    return evaluateOnSpan(knots_, degree_, span, local.data(), v, order);
+  }
+  std::vector<Point2> local(first, first + degree_ + 1);
+  return evaluateOnSpan(knots_, degree_, span, local.data(), v, order);
 }
 
 BasisRow BSplineCurve::basisAt(double u, int order) const {
@@ -161,7 +170,7 @@ BasisRow BSplineCurve::basisAt(double u, int order) const {
   for (int j = 0; j <= degree_; ++j) unit[j][j] = 1.0;
   BasisRow row;
   row.first_index = span - degree_;
-  row.values = evaluateOnSpan(knots_, degree_, span, std::move(unit), v, order);
+  row.values = evaluateOnSpan(knots_, degree_, span, unit.data(), v, order);
   return row;
 }
 
