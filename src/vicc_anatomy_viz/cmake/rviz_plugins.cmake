@@ -14,6 +14,7 @@ add_library(vicc_anatomy_viz_rviz
   src/rviz/avatar_visual.cpp
   src/rviz/encoded_status_conversion.cpp
   src/rviz/relief_program.cpp
+  src/rviz/renderer_heap.cpp
   src/rviz/screen_overlay.cpp
   src/rviz/see_through_stencil.cpp
   src/rviz/structure_selection.cpp

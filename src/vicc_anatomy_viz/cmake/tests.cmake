@@ -87,3 +87,8 @@ add_dependencies(vicc_avatar_snapshot_test vicc_avatar_snapshot vicc_anatomy_viz
 # The patient panel: its logic, avatar.launch, the plugin under Xvfb.
 include(cmake/patient_panel_tests.cmake)
 include(cmake/status_glyph_tests.cmake)
+
+# The heap tuning for software rendering (no display needed).
+catkin_add_gtest(vicc_anatomy_viz_renderer_heap_test test/rviz/RendererHeapTest.cpp)
+target_compile_options(vicc_anatomy_viz_renderer_heap_test PRIVATE ${VICC_WARNINGS})
+target_link_libraries(vicc_anatomy_viz_renderer_heap_test vicc_anatomy_viz_rviz gtest_main)

@@ -1,6 +1,9 @@
 #include "vicc_anatomy_viz/rviz/avatar_display.hpp"
 
 #include <OGRE/OgreCamera.h>
+#include <OGRE/OgreRenderSystem.h>
+#include <OGRE/OgreRenderSystemCapabilities.h>
+#include <OGRE/OgreRoot.h>
 #include <rviz/display_context.h>
 #include <rviz/properties/bool_property.h>
 #include <rviz/properties/float_property.h>
@@ -18,6 +21,7 @@
 #include "vicc_anatomy_viz/rviz/avatar_visual.hpp"
 #include "vicc_anatomy_viz/rviz/encoded_status_conversion.hpp"
 #include "vicc_anatomy_viz/rviz/ogre_camera.hpp"
+#include "vicc_anatomy_viz/rviz/renderer_heap.hpp"
 #include "vicc_anatomy_viz/rviz/screen_overlay.hpp"
 
 namespace vicc_anatomy_viz::rviz_plugin {
@@ -40,6 +44,20 @@ std::string categoryLabel(const vicc_msgs::EncodedStatus& status, const std::str
   for (const auto& entry : status.legend)
     if (entry.id == category) return entry.label;
   return category;
+}
+
+/// Once per process: on a CPU rasteriser, llvmpipe's per-frame scene memory stays mapped
+/// instead of being page-faulted in again every frame (renderer_heap.hpp).
+void tuneHeapForSoftwareRendering() {
+  static bool done = false;
+  if (done) return;
+  done = true;
+  const Ogre::RenderSystem* system = Ogre::Root::getSingleton().getRenderSystem();
+  const Ogre::RenderSystemCapabilities* capabilities = system ? system->getCapabilities() : nullptr;
+  if (!capabilities || !isSoftwareRenderer(capabilities->getDeviceName())) return;
+  if (keepFreedHeapForRendering())
+    ROS_INFO("Avatar: software renderer (%s): heap trim threshold raised to %zu MB",
+             capabilities->getDeviceName().c_str(), kRendererTrimThresholdBytes >> 20);
 }
 
 }  // namespace
@@ -91,6 +109,7 @@ AvatarDisplay::~AvatarDisplay() {
 }
 
 void AvatarDisplay::onInitialize() {
+  tuneHeapForSoftwareRendering();
   static unsigned instances = 0;
   const std::string name = "vicc_avatar_overlay_" + std::to_string(++instances);
   legend_ = std::make_unique<ScreenOverlay>(name + "/legend", ScreenOverlay::Corner::kTopLeft);

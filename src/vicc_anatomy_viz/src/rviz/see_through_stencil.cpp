@@ -29,6 +29,9 @@ void SeeThroughStencil::renderQueueStarted(Ogre::uint8 queue, const Ogre::String
   const bool picking =
       Ogre::MaterialManager::getSingleton().getActiveScheme().rfind("Pick", 0) == 0;
   if (queue == kOccluderQueue) skip = !enabled_ || picking;
+  // Not see-through, the opaque skin hides every inner structure: llvmpipe would still
+  // rasterise (and bin) each of them only to fail the depth test.
+  if (queue == kEncodedQueue) skip = !enabled_;
   if (!enabled_) return;
   if (queue == kEncodedQueue) {
     // Depth and stencil share one buffer: clearing both is one plain clear.

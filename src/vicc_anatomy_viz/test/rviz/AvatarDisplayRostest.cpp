@@ -2,7 +2,7 @@
 // server's service, drawn by the AvatarDisplay in rviz; the rendered colours at the projected
 // positions of known structures are the encoded ones (hue within tolerance), a later date and
 // a hidden category change them, and switching the view-dependent transparency off hides the
-// paresis under the skin.
+// paresis under the opaque skin (not under a translucent one).
 #include <gtest/gtest.h>
 
 #include <ros/ros.h>
@@ -327,6 +327,19 @@ TEST_F(AvatarDisplayRostest, WithoutTransparencyTheSkinHidesTheParesis) {
   const auto* pain = drawn("radicular_pain", "dermatome_L5", Side::kLeft);
   ASSERT_NE(pain, nullptr);
   expectHue(opaque, facingPoint("dermatome_L5", Side::kLeft), pain->color, "left L5 pain");
+}
+
+TEST_F(AvatarDisplayRostest, WithoutTransparencyATranslucentSkinStillShowsTheParesis) {
+  // Transparency off skips the inner structures only under an opaque skin.
+  renderer_->setTransparency(false);
+  renderer_->display().subProp("Skin alpha")->setValue(0.4f);
+  const QImage image = show("2023-03-06", {}, BodyView::kFront);
+  renderer_->display().subProp("Skin alpha")->setValue(1.0f);
+  renderer_->setTransparency(true);
+  const auto* paresis = drawn("paresis", "tibialis_anterior", Side::kRight);
+  ASSERT_NE(paresis, nullptr);
+  expectHue(image, structureCentre("tibialis_anterior", Side::kRight), paresis->color,
+            "right tibialis anterior paresis through a skin of alpha 0.4");
 }
 
 TEST_F(AvatarDisplayRostest, ClickingAStructureShowsItsNameAndRawValues) {

@@ -16,7 +16,8 @@ namespace vicc_anatomy_viz::rviz_plugin {
 
 class SeeThroughStencil : public Ogre::RenderQueueListener {
  public:
-  /// Whether the encoded inner structures are drawn over what hides them.
+  /// Whether the encoded inner structures are drawn over what hides them; if not, they are
+  /// not drawn at all (the opaque skin hides them).
   void setEnabled(bool enabled) { enabled_ = enabled; }
   void renderQueueStarted(Ogre::uint8 queue, const Ogre::String& invocation, bool& skip) override;
   void renderQueueEnded(Ogre::uint8 queue, const Ogre::String& invocation, bool& repeat) override;
