@@ -35,4 +35,4 @@ install(TARGETS vicc_anatomy_viz_panel_logic vicc_anatomy_viz_rviz_panel
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 install(DIRECTORY rviz DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
-install(PROGRAMS scripts/avatar_sample_db DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)
+install(PROGRAMS scripts/avatar_sample_db scripts/rviz_antialiasing DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/scripts)

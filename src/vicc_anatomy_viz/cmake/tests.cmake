@@ -92,3 +92,13 @@ include(cmake/status_glyph_tests.cmake)
 catkin_add_gtest(vicc_anatomy_viz_renderer_heap_test test/rviz/RendererHeapTest.cpp)
 target_compile_options(vicc_anatomy_viz_renderer_heap_test PRIVATE ${VICC_WARNINGS})
 target_link_libraries(vicc_anatomy_viz_renderer_heap_test vicc_anatomy_viz_rviz gtest_main)
+
+# avatar.launch's launch-prefix of rviz (anti-aliasing true / false / auto).
+catkin_add_gtest(vicc_anatomy_viz_rviz_antialiasing_test test/tools/RvizAntialiasingTest.cpp)
+target_compile_options(vicc_anatomy_viz_rviz_antialiasing_test PRIVATE ${VICC_WARNINGS})
+target_compile_definitions(vicc_anatomy_viz_rviz_antialiasing_test PRIVATE
+  VICC_RVIZ_ANTIALIASING_SCRIPT="${CMAKE_CURRENT_SOURCE_DIR}/scripts/rviz_antialiasing"
+  VICC_AVATAR_LAUNCH="${CMAKE_CURRENT_SOURCE_DIR}/launch/avatar.launch")
+target_include_directories(vicc_anatomy_viz_rviz_antialiasing_test PRIVATE
+  ${CMAKE_CURRENT_SOURCE_DIR}/../../test/common)
+target_link_libraries(vicc_anatomy_viz_rviz_antialiasing_test gtest_main)
