@@ -11,7 +11,8 @@
 //   interpolated as the start of the next finer level, which gets `intermediate_cycles`
 //   V-cycles, and so on; the finest level iterates until the error estimate is at most
 //   `tolerance` (or for `fine_cycles` iterations when the tolerance is 0).
-// - Finest level: conjugate gradients preconditioned by one V-cycle.
+// - Finest level: conjugate gradients preconditioned by one V-cycle; when the first iteration
+//   is slow, deflated by the constants of pieces split at one- or two-pixel necks (A-DEF2).
 // - V-cycle: red-black Gauss-Seidel on the finest level (black-red after the coarse
 //   correction), lexicographic Gauss-Seidel on the coarse ones (backwards after it): with
 //   R = P^T and equal sweep counts a symmetric positive definite preconditioner.
