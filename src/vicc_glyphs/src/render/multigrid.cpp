@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -15,6 +16,7 @@
 #include <utility>
 
 #include "banded_cholesky.hpp"
+#include "multigrid_deflation.hpp"
 #include "multigrid_levels.hpp"
 #include "vicc_glyphs/render/pixel_buffer.hpp"
 
@@ -43,6 +45,8 @@ class Multigrid {
   using Field = render_detail::PixelVector<Px>;
   // Dot products per channel, in double: a level can have 10^7 pixels.
   using Sum = std::array<double, C>;
+  // Called with a row index of the finest level (see vcycle).
+  using RowHook = std::function<void(int)>;
 
  public:
   // Builds the hierarchy for `problem`, reusing the memory of the previous solve.
@@ -177,6 +181,12 @@ class Multigrid {
     for (int c = 0; c < C; ++c) sum[c] += channel(value, c);
   }
 
+  static Sum toSum(const Px& value) {
+    Sum sum{};
+    accumulate(sum, value);
+    return sum;
+  }
+
   // num / den per channel; 0 where den is not positive (a channel already solved exactly).
   static Px ratio(const Sum& num, const Sum& den) {
     Px out{};
@@ -265,78 +275,240 @@ class Multigrid {
 
   // Preconditioned conjugate gradients on the finest level from u_[0]; the preconditioner is
   // one V-cycle from zero on the residual. r, z, p and A p are 0 at Dirichlet pixels and in the
-  // ghost border, so the passes need no mask.
+  // ghost border, so the passes need no mask. From the second iteration on, when the first
+  // shows slow convergence, the directions are deflated (see DeflationSpace); CG restarts there.
   void conjugateGradients(FineProgress& progress) {
     const bool until_converged = options_.tolerance > 0.0;
-    const bool record = options_.record_residuals || until_converged;
+    const bool record = options_.record_residuals;  // rms statistics only when asked for
     const int iterations = until_converged ? options_.max_fine_cycles : options_.fine_cycles;
     const size_t size = fine_.size;
-    Px* __restrict u = u_[0].data();
+    const Px* __restrict u = u_[0].data();
     Px* __restrict r = r_.data();
-    Px* __restrict z = z_.data();
-    Px* __restrict p = p_.data();
-    Px* __restrict ap = ap_.data();
-    for (size_t i = 0; i < size; ++i) r[i] = residualAt(fine_, u, nullptr, i);
-    if (record) progress.residuals.push_back(rms(sumRows([&](size_t i) { return r[i] * r[i]; })));
+    Px squares{};  // in float: only the deflation's decision reads it unless recording
+    for (size_t i = 0; i < size; ++i) {
+      r[i] = residualAt(fine_, u, nullptr, i);
+      squares += r[i] * r[i];
+    }
+    const double start_residual =
+        record ? rms(sumRows([&](size_t i) { return r[i] * r[i]; })) : rms(toSum(squares));
+    if (record) progress.residuals.push_back(start_residual);
+    double first_residual = 0.0;  // after the first iteration
     Sum rz_previous{};
     alphas_.clear();
     betas_.clear();
+    ritz_floor_.fill(1.0);
+    deflating_ = false;
+    bool restart = true;
     for (int k = 0; k <= iterations; ++k) {
       const bool last = k == iterations;
       if (last && !until_converged) break;  // a fixed count needs no estimate of the result
-      vcycle(0, z, r, true);
+      // Deflate when the first iteration shows that two more at its rate would not do (most
+      // icons converge in 0-2 iterations and never pay for it): the first estimate shrunk
+      // twice by the first iteration's residual reduction. Only a matter of cost.
+      if (k == 1 && !last && options_.deflation &&
+          first_estimate_ * std::pow(first_residual / start_residual, 2) > options_.tolerance &&
+          startDeflation()) {
+        restart = true;
+      }
       Px largest{};
-      const Sum rz = sumRows([&](size_t i) {
-        largest = largerMagnitude(largest, z[i]);
-        return r[i] * z[i];
-      });
-      if (record) {
-        // z = B r = (B A) e: the error e itself where B inverts A well, a fraction of it (an
-        // eigenvalue of B A) where not, e.g. for a region that reaches its Dirichlet pixels
-        // through a gap. So the estimate divides by the smallest eigenvalue CG has met.
-        double estimate = 0.0;
-        for (int c = 0; c < C; ++c) {
-          const double smallest = std::min(1.0, smallestRitzValue(alphas_, betas_, c));
-          estimate = std::max(estimate, channel(largest, c) / std::max(smallest, kSmallestRitz));
-        }
-        progress.error_estimates.push_back(estimate);
-        progress.converged = until_converged && estimate <= options_.tolerance;
-        if (progress.converged || last) {
-          for (size_t i = 0; i < size; ++i) u[i] += z[i];  // the estimate's correction, for free
-          break;
+      Sum rz = precondition(largest);
+      bool projected = false;  // the deflation's start moved this iterate: same estimate entry
+      if (!deflating_) {
+        const double estimate = errorEstimate(largest);
+        if (stops(estimate, last, false, progress)) break;
+        if (k == 0) first_estimate_ = estimate;
+        // A slow mode with a small residual (a long channel behind a gap) shows only in the
+        // estimate: deflate if one more iteration at the first one's rate would not do, at the
+        // price of the V-cycle redone for the projected residual.
+        if (k == 1 && options_.deflation &&
+            estimate * (estimate / first_estimate_) > options_.tolerance && startDeflation()) {
+          restart = projected = true;
+          largest = Px{};
+          rz = precondition(largest);
         }
       }
-      const Px beta = k == 0 ? Px{} : ratio(rz, rz_previous);
+      const Px beta = restart ? Px{} : ratio(rz, rz_previous);
       rz_previous = rz;
-      const Px alpha = ratio(rz, updateDirection(beta, k == 0));
+      const Px alpha = ratio(rz, updateDirection(beta, restart, largest));
+      // Deflated, the correction's largest magnitude is known only now (the last direction is
+      // then computed in vain).
+      if (deflating_ && stops(errorEstimate(largest), last, projected, progress)) break;
+      restart = false;
       alphas_.push_back(alpha);
       betas_.push_back(beta);
-      Sum update_squares{}, rr{};
-      if (record) {
-        for (int y = 0; y < fine_.height; ++y) {
-          Px row_updates{}, row_residuals{};
-          for (int i = fine_.index(0, y), end = fine_.index(fine_.width, y); i < end; ++i) {
-            const Px step = alpha * p[i];
-            u[i] += step;
-            r[i] -= alpha * ap[i];
-            row_updates += step * step;
-            row_residuals += r[i] * r[i];
-          }
-          accumulate(update_squares, row_updates);
-          accumulate(rr, row_residuals);
-        }
-      } else {
-        for (size_t i = 0; i < size; ++i) {
-          u[i] += alpha * p[i];
-          r[i] -= alpha * ap[i];
-        }
-      }
+      const double residual = step(alpha, record ? &progress : nullptr, k == 0);
+      if (k == 0) first_residual = residual;
       ++progress.iterations;
-      if (record) {
-        progress.residuals.push_back(rms(rr));
-        progress.updates.push_back(rms(update_squares));
+    }
+  }
+
+  // Records the estimate of the current iterate (`replace`: instead of the last one); at the
+  // tolerance or the last iteration adds the estimate's correction (for free) and returns true.
+  bool stops(double estimate, bool last, bool replace, FineProgress& progress) {
+    if (options_.tolerance > 0.0 || options_.record_residuals) {
+      if (replace) progress.error_estimates.pop_back();
+      progress.error_estimates.push_back(estimate);
+    }
+    progress.converged = options_.tolerance > 0.0 && estimate <= options_.tolerance;
+    if (!progress.converged && !last) return false;
+    Px* __restrict u = u_[0].data();
+    const Px* __restrict z = z_.data();
+    if (deflating_) {
+      const std::uint32_t* labels = deflation_.labels();
+      for (size_t i = 0; i < fine_.size; ++i) u[i] += z[i] - coefficients_[labels[i]];
+    } else {
+      for (size_t i = 0; i < fine_.size; ++i) u[i] += z[i];
+    }
+    return true;
+  }
+
+  // z = B r, the V-cycle's correction; returns r . z per channel (r . (z - Z c) when deflating:
+  // the same, as r is orthogonal to Z's columns) and, not deflating, sets `largest` to max |z|
+  // per channel, both summed as the post-smoothing finishes each row. Deflating, the
+  // coefficients c of E c = Z^T A z (A-DEF2: z - Z c is A-orthogonal to the pieces' constants;
+  // no Q r term, r stays orthogonal to them), which updateDirection subtracts.
+  Sum precondition(Px& largest) {
+    const Px* __restrict r = r_.data();
+    Px* __restrict z = z_.data();
+    Sum rz{};
+    const bool deflating = deflating_;
+    const RowHook row_statistics = [&, r, z](int y) {
+      Px row{};
+      for (int i = fine_.index(0, y), end = fine_.index(fine_.width, y); i < end; ++i) {
+        if (!deflating) largest = largerMagnitude(largest, z[i]);
+        row += r[i] * z[i];
+      }
+      accumulate(rz, row);
+    };
+    vcycle(0, z, r, true, &row_statistics);
+    if (deflating) solveDeflated(boundaryProduct(z));
+    return rz;
+  }
+
+  // z = (B A) e: the error e itself where B inverts A well, a fraction of it (an eigenvalue
+  // of B A) where not, e.g. for a region that reaches its Dirichlet pixels through a gap. So
+  // the estimate divides by the smallest eigenvalue CG has met (before a restart: the one met
+  // before it, until the restarted CG has met one itself).
+  double errorEstimate(const Px& largest) const {
+    double estimate = 0.0;
+    for (int c = 0; c < C; ++c) {
+      const double smallest =
+          alphas_.empty() ? ritz_floor_[c] : std::min(1.0, smallestRitzValue(alphas_, betas_, c));
+      estimate = std::max(estimate, channel(largest, c) / std::max(smallest, kSmallestRitz));
+    }
+    return estimate;
+  }
+
+  // u += alpha p, r -= alpha A p; with `progress` also records the rms update and residual.
+  // Returns the rms residual with `progress` or `measure` (else 0).
+  double step(const Px& alpha, FineProgress* progress, bool measure) {
+    Px* __restrict u = u_[0].data();
+    Px* __restrict r = r_.data();
+    const Px* __restrict p = p_.data();
+    const Px* __restrict ap = ap_.data();
+    if (!progress && !measure) {
+      for (size_t i = 0; i < fine_.size; ++i) {
+        u[i] += alpha * p[i];
+        r[i] -= alpha * ap[i];
+      }
+      return 0.0;
+    }
+    Sum update_squares{}, rr{};
+    for (int y = 0; y < fine_.height; ++y) {
+      Px row_updates{}, row_residuals{};
+      for (int i = fine_.index(0, y), end = fine_.index(fine_.width, y); i < end; ++i) {
+        const Px update = alpha * p[i];
+        u[i] += update;
+        r[i] -= alpha * ap[i];
+        row_updates += update * update;
+        row_residuals += r[i] * r[i];
+      }
+      accumulate(update_squares, row_updates);
+      accumulate(rr, row_residuals);
+    }
+    if (progress) {
+      progress->residuals.push_back(rms(rr));
+      progress->updates.push_back(rms(update_squares));
+    }
+    return rms(rr);
+  }
+
+  // Builds the deflation space and projects the iterate onto it; returns whether CG restarts
+  // (false when there is nothing to deflate). The Ritz values met so far stay the estimate's
+  // floor until the restarted CG has its own.
+  bool startDeflation() {
+    deflation_.build(fine_);
+    if (deflation_.count() == 0) return false;
+    for (int c = 0; c < C; ++c) {
+      ritz_floor_[c] = std::min(1.0, smallestRitzValue(alphas_, betas_, c));
+    }
+    alphas_.clear();
+    betas_.clear();
+    deflateStart();
+    deflating_ = true;
+    return true;
+  }
+
+  // A-DEF2's start: u + Z E^-1 Z^T r, whose residual is orthogonal to the regions' constants
+  // (then every later one is: the directions are A-orthogonal to them).
+  void deflateStart() {
+    const int count = deflation_.count();
+    std::vector<Sum> sums(static_cast<size_t>(count) + 1, Sum{});
+    const std::uint32_t* labels = deflation_.labels();
+    const Px* __restrict r = r_.data();
+    for (size_t i = 0; i < fine_.size; ++i) accumulate(sums[labels[i]], r[i]);
+    regions_.resize(count, C);
+    for (int k = 0; k < count; ++k) {
+      for (int c = 0; c < C; ++c) regions_(k, c) = sums[k][c];
+    }
+    solveDeflated(regions_);
+    Px* __restrict u = u_[0].data();
+    for (size_t i = 0; i < fine_.size; ++i) u[i] += coefficients_[labels[i]];
+    for (const int p : deflation_.boundary()) r_[p] -= operatorOfCoefficients(p);
+  }
+
+  // Z^T A v, which only the boundary pixels' values enter (A Z is 0 elsewhere).
+  Eigen::MatrixXd& boundaryProduct(const Px* v) {
+    regions_.setZero(deflation_.count(), C);
+    const std::uint32_t* labels = deflation_.labels();
+    const std::uint32_t none = static_cast<std::uint32_t>(deflation_.count());
+    const int s = fine_.stride;
+    for (const int p : deflation_.boundary()) {
+      const std::uint8_t m = fine_.mask[p];
+      const std::uint32_t k = labels[p];
+      for (const auto& [link, q] :
+           {std::pair{kLeft, p - 1}, {kRight, p + 1}, {kUp, p - s}, {kDown, p + s}}) {
+        if (!(m & link) || labels[q] == k) continue;
+        for (int c = 0; c < C; ++c) {
+          regions_(k, c) += channel(v[p], c);
+          if (labels[q] != none) regions_(labels[q], c) -= channel(v[p], c);
+        }
       }
     }
+    return regions_;
+  }
+
+  // coefficients_ = E^-1 g per channel, and 0 for the pixels outside every region.
+  void solveDeflated(Eigen::MatrixXd& g) {
+    deflation_.solve(g);
+    const int count = deflation_.count();
+    coefficients_.assign(static_cast<size_t>(count) + 1, Px{});
+    for (int k = 0; k < count; ++k) {
+      for (int c = 0; c < C; ++c) setChannel(coefficients_[k], c, static_cast<float>(g(k, c)));
+    }
+  }
+
+  // (A Z c)(p) for the coefficients c: the differences across the links that leave p's region.
+  Px operatorOfCoefficients(int p) const {
+    const std::uint32_t* labels = deflation_.labels();
+    const std::uint8_t m = fine_.mask[p];
+    const int s = fine_.stride;
+    Px sum{};
+    for (const auto& [link, q] :
+         {std::pair{kLeft, p - 1}, {kRight, p + 1}, {kUp, p - s}, {kDown, p + s}}) {
+      if (m & link) sum += coefficients_[labels[p]] - coefficients_[labels[q]];
+    }
+    return sum;
   }
 
   // The smallest eigenvalue of the preconditioned operator B A that CG has met in channel c:
@@ -383,9 +555,10 @@ class Multigrid {
     return upper;
   }
 
-  // p = z + beta p (the first time p = z: p holds garbage) and A p, row by row (A p of a row
-  // needs p of the rows around it, so it trails by one); returns p . A p.
-  Sum updateDirection(const Px& beta, bool first) {
+  // p = y + beta p (the first time p = y: p holds garbage) and A p, row by row (A p of a row
+  // needs p of the rows around it, so it trails by one); returns p . A p. y is z, or deflating
+  // z - Z c, whose largest magnitude per channel then goes to `largest`.
+  Sum updateDirection(const Px& beta, bool first, Px& largest) {
     const Px* __restrict z = z_.data();
     Px* __restrict p = p_.data();
     Px* __restrict ap = ap_.data();
@@ -398,9 +571,18 @@ class Multigrid {
       }
       accumulate(total, row);
     };
+    const std::uint32_t* labels = deflating_ ? deflation_.labels() : nullptr;
+    const Px* coefficients = coefficients_.data();
+    const Px scale = first ? Px{} : beta;  // p holds garbage the first time: not read then
     for (int y = 0; y < fine_.height; ++y) {
       const int begin = fine_.index(0, y), end = fine_.index(fine_.width, y);
-      if (first) {
+      if (labels) {
+        for (int i = begin; i < end; ++i) {
+          const Px deflated = z[i] - coefficients[labels[i]];
+          largest = largerMagnitude(largest, deflated);
+          p[i] = first ? deflated : deflated + scale * p[i];
+        }
+      } else if (first) {
         std::copy(z + begin, z + end, p + begin);
       } else {
         for (int i = begin; i < end; ++i) p[i] = z[i] + beta * p[i];
@@ -426,8 +608,9 @@ class Multigrid {
   }
 
   // One V-cycle on level l for A u = f, from u or, with `from_zero`, from 0 (u is then not read
-  // at the free points; its other points must be 0).
-  void vcycle(int l, Px* u, const Px* f, bool from_zero) {
+  // at the free points; its other points must be 0). On level 0 `final_row` (if any) is called
+  // with each row of u as soon as the post-smoothing has finished it.
+  void vcycle(int l, Px* u, const Px* f, bool from_zero, const RowHook* final_row = nullptr) {
     const int coarsest = levelCount() - 1;
     if (l == coarsest) {
       solveCoarsest(u, f);
@@ -452,7 +635,7 @@ class Multigrid {
     prolong<true>(l, u_[l + 1].data(), u);
     // The adjoint of the pre-smoothing.
     if (l == 0) {
-      smoothFine(u, f, post, true, false);
+      smoothFine(u, f, post, true, false, final_row);
     } else {
       smoothCoarse(coarse_[l - 1], u, f, post, true, false);
     }
@@ -469,7 +652,8 @@ class Multigrid {
   // sum w, red pixels (x + y even) first, or black first if `black_first`. The second
   // half-sweep trails the first by a row, so one pass over memory does a full sweep. From
   // zero, the first half-sweep reads no neighbours.
-  void smoothFine(Px* u, const Px* f, int sweeps, bool black_first, bool from_zero) const {
+  void smoothFine(Px* u, const Px* f, int sweeps, bool black_first, bool from_zero,
+                  const RowHook* final_row = nullptr) const {
     const int order = black_first ? 1 : 0;
     for (int sweep = 0; sweep < sweeps; ++sweep) {
       const bool leading_from_zero = from_zero && sweep == 0;
@@ -490,8 +674,12 @@ class Multigrid {
           } else {
             relaxRow<false>(u, f, y - 1, first_x);
           }
+          if (final_row && sweep + 1 == sweeps) (*final_row)(y - 1);
         }
       }
+    }
+    if (final_row && sweeps == 0) {
+      for (int y = 0; y < fine_.height; ++y) (*final_row)(y);
     }
   }
 
@@ -775,6 +963,12 @@ class Multigrid {
   std::vector<Field> u_, f_;        // per level: solution (FMG) or correction (V-cycle), rhs
   Field r_, z_, p_, ap_;            // CG: residual, preconditioned residual, direction, A direction
   std::vector<Px> alphas_, betas_;  // CG's step coefficients (its Lanczos matrix)
+  DeflationSpace deflation_;
+  bool deflating_ = false;              // this solve's CG has started deflating
+  double first_estimate_ = 0.0;         // of the FMG start
+  std::array<double, C> ritz_floor_{};  // see errorEstimate
+  Eigen::MatrixXd regions_;             // a vector over the deflation regions per channel
+  std::vector<Px> coefficients_;        // per region (and 0 past the last): Z's coefficients
   // Floor of the eigenvalue the error estimate divides by (float round-off in long runs).
   static constexpr double kSmallestRitz = 1e-3;
 };

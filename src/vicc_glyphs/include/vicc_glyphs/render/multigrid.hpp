@@ -11,7 +11,8 @@
 //   interpolated as the start of the next finer level, which gets `intermediate_cycles`
 //   V-cycles, and so on; the finest level iterates until the error estimate is at most
 //   `tolerance` (or for `fine_cycles` iterations when the tolerance is 0).
-// - Finest level: conjugate gradients preconditioned by one V-cycle.
+// - Finest level: conjugate gradients preconditioned by one V-cycle; when the first iteration
+//   is slow, deflated by the constants of pieces split at one- or two-pixel necks (A-DEF2).
 // - V-cycle: red-black Gauss-Seidel on the finest level (black-red after the coarse
 //   correction), lexicographic Gauss-Seidel on the coarse ones (backwards after it): with
 //   R = P^T and equal sweep counts a symmetric positive definite preconditioner.
@@ -35,9 +36,14 @@ struct MultigridOptions {
   int coarsest_size = 16;         ///< coarsen until the larger side is at most this (1..64);
                                   ///< that level is solved directly
   bool record_residuals = false;  ///< record the finest level's residuals and estimates
+  /// When the first CG iteration shows slow convergence, deflate the piecewise constants of
+  /// the image's pieces (free pixels split at holes and necks of one or two pixels and into
+  /// 128 px squares) from CG's directions (see docs/rendering.md): regions behind such necks,
+  /// like the ladybug's leg pockets, then converge in fewer iterations.
+  bool deflation = true;
   /// > 0 (the default): iterate on the finest level until the error estimate, the largest
   /// magnitude of the V-cycle's correction B r over the free pixels and channels (colour
-  /// units, 0..1), is at most this, at most `max_fine_cycles` times; the history is then
+  /// units, 0..1), is at most this, at most `max_fine_cycles` times; the estimates are then
   /// always recorded, and that last correction is added to the result. 0: `fine_cycles`
   /// iterations, whatever the error.
   double tolerance = kDefaultTolerance;
@@ -56,11 +62,11 @@ struct MultigridReport {
   int fine_cycles = 0;  ///< CG iterations (one V-cycle each) done on the finest level
   /// With a tolerance: whether the error estimate reached it within max_fine_cycles.
   bool converged = false;
-  /// Over the finest level's free pixels and all channels (with record_residuals or a
-  /// tolerance): RMS residual (entry 0 at the FMG start, entry k after iteration k); error
-  /// estimate (largest magnitude, see tolerance) of the iterate after iteration k (entry k;
-  /// with a tolerance the last one is the one that met it); RMS update of iteration k+1
-  /// (entry k).
+  /// Over the finest level's free pixels and all channels: RMS residual (entry 0 at the FMG
+  /// start, entry k after iteration k) and RMS update of iteration k+1 (entry k), with
+  /// record_residuals only (they cost arithmetic in the CG's passes); error estimate (largest
+  /// magnitude, see tolerance) of the iterate after iteration k (entry k; with a tolerance the
+  /// last one is the one that met it), with record_residuals or a tolerance.
   std::vector<double> residuals;
   std::vector<double> error_estimates;
   std::vector<double> updates;

@@ -1,0 +1,154 @@
+#include "multigrid_deflation.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace vicc_glyphs::multigrid_detail {
+
+void DeflationSpace::build(const FineLevel& fine) {
+  count_ = 0;
+  markInterior(fine);
+  joinPieces(fine);
+  compactLabels(fine);
+  factorise(fine);
+}
+
+// Interior: linked to four free pixels, so not next to a curve, a Dirichlet pixel or the image
+// border. A neck of one or two pixels between two regions has no interior pixel.
+void DeflationSpace::markInterior(const FineLevel& fine) {
+  interior_.assign(fine.size, 0);
+  const std::uint8_t* mask = fine.mask.data();
+  const int s = fine.stride;
+  for (int y = 0; y < fine.height; ++y) {
+    for (int p = fine.index(0, y), end = fine.index(fine.width, y); p < end; ++p) {
+      const std::uint8_t around = mask[p - 1] | mask[p + 1] | mask[p - s] | mask[p + s];
+      interior_[p] = mask[p] == kAllLinks && !(around & kFixed);
+    }
+  }
+}
+
+// Union-find within each kTileSize square: interior pixels join their interior neighbours
+// (unless the link between them is a hole of one or two links in a wall of cut links); every
+// other free pixel joins one linked interior neighbour (never two, so a neck does not merge the
+// regions on its sides), or, without one, its linked neighbours of the same kind.
+void DeflationSpace::joinPieces(const FineLevel& fine) {
+  parent_.resize(fine.size);
+  for (size_t p = 0; p < fine.size; ++p) parent_[p] = static_cast<int>(p);
+  const std::uint8_t* mask = fine.mask.data();
+  const std::uint8_t* interior = interior_.data();
+  const int s = fine.stride;
+  for (int y = 0; y < fine.height; ++y) {
+    const bool up_inside = y % kTileSize != 0;
+    for (int x = 0; x < fine.width; ++x) {
+      const int p = fine.index(x, y);
+      const bool left_inside = x % kTileSize != 0;
+      if (!interior[p]) continue;
+      // Not through a hole in a wall of cut links: the links beside this one must be there.
+      // p is still its own root: hang it below its left neighbour's parent (short chains).
+      if (left_inside && interior[p - 1] && (mask[p - s] & mask[p + s] & kLeft)) {
+        parent_[p] = parent_[p - 1];
+      }
+      if (up_inside && interior[p - s] && (mask[p - 1] & mask[p + 1] & kUp)) unite(p, p - s);
+    }
+  }
+  for (int y = 0; y < fine.height; ++y) {
+    for (int x = 0; x < fine.width; ++x) {
+      const int p = fine.index(x, y);
+      const std::uint8_t m = mask[p];
+      if ((m & kFixed) || interior[p]) continue;
+      const bool inside[4] = {x % kTileSize != 0, (x + 1) % kTileSize != 0 && x + 1 < fine.width,
+                              y % kTileSize != 0, (y + 1) % kTileSize != 0 && y + 1 < fine.height};
+      const std::uint8_t links[4] = {kLeft, kRight, kUp, kDown};
+      const int offsets[4] = {-1, 1, -s, s};
+      bool joined = false;
+      for (int k = 0; k < 4 && !joined; ++k) {
+        if (inside[k] && (m & links[k]) && interior[p + offsets[k]]) {
+          parent_[p] = find(p + offsets[k]);
+          joined = true;
+        }
+      }
+      if (joined) continue;
+      for (int k = 0; k < 4; k += 2) {  // left and up: the pixels before p
+        const int q = p + offsets[k];
+        if (inside[k] && (m & links[k]) && !(mask[q] & kFixed) && !interior[q] &&
+            !hasInteriorLink(fine, q)) {
+          unite(p, q);
+        }
+      }
+    }
+  }
+}
+
+// Whether the non-interior free pixel q joined an interior neighbour in its square.
+bool DeflationSpace::hasInteriorLink(const FineLevel& fine, int q) const {
+  const int x = q % fine.stride - 1, y = q / fine.stride - 1;
+  const std::uint8_t m = fine.mask[q];
+  const int s = fine.stride;
+  return (x % kTileSize != 0 && (m & kLeft) && interior_[q - 1]) ||
+         ((x + 1) % kTileSize != 0 && (m & kRight) && interior_[q + 1]) ||
+         (y % kTileSize != 0 && (m & kUp) && interior_[q - s]) ||
+         ((y + 1) % kTileSize != 0 && (m & kDown) && interior_[q + s]);
+}
+
+// Numbers the pieces 0..count_-1 in scan order of the first pixel met; count_ at everything
+// that is not a free pixel.
+void DeflationSpace::compactLabels(const FineLevel& fine) {
+  constexpr std::uint32_t kUnset = ~std::uint32_t{0};
+  labels_.assign(fine.size, kUnset);
+  for (int y = 0; y < fine.height; ++y) {
+    for (int p = fine.index(0, y), end = fine.index(fine.width, y); p < end; ++p) {
+      if (!fine.isFree(p)) continue;
+      // A root is only read through find(): its entry holds the number, a member's its own.
+      const int root = find(p);
+      if (labels_[root] == kUnset) labels_[root] = static_cast<std::uint32_t>(count_++);
+      labels_[p] = labels_[root];
+    }
+  }
+  for (std::uint32_t& label : labels_) {
+    if (label == kUnset) label = static_cast<std::uint32_t>(count_);
+  }
+}
+
+// E = Z^T A Z: per piece the links that leave it on the diagonal, minus the links between two
+// pieces off it. Also collects the boundary pixels.
+void DeflationSpace::factorise(const FineLevel& fine) {
+  boundary_.clear();
+  triplets_.clear();
+  diagonal_.assign(static_cast<size_t>(count_), 0.0);
+  const std::uint32_t none = static_cast<std::uint32_t>(count_);
+  const int s = fine.stride;
+  const std::uint32_t* labels = labels_.data();
+  for (int y = 0; y < fine.height; ++y) {
+    for (int p = fine.index(0, y), end = fine.index(fine.width, y); p < end; ++p) {
+      const std::uint32_t k = labels[p];
+      // The common case: all four neighbours in p's piece (or p not free). No branches, so
+      // that this test vectorises.
+      if ((labels[p - 1] == k) & (labels[p + 1] == k) & (labels[p - s] == k) &
+          (labels[p + s] == k)) {
+        continue;
+      }
+      if (k == none) continue;
+      const std::uint8_t m = fine.mask[p];
+      const std::uint32_t around[4] = {labels_[p - 1], labels_[p + 1], labels_[p - s],
+                                       labels_[p + s]};
+      const std::uint8_t links[4] = {kLeft, kRight, kUp, kDown};
+      bool leaves = false;
+      for (int j = 0; j < 4; ++j) {
+        if (!(m & links[j]) || around[j] == k) continue;
+        leaves = true;
+        diagonal_[k] += 1.0;
+        if (around[j] != none) triplets_.emplace_back(k, around[j], -1.0);
+      }
+      if (leaves) boundary_.push_back(p);
+    }
+  }
+  for (int k = 0; k < count_; ++k) triplets_.emplace_back(k, k, diagonal_[k]);
+  coarse_.resize(count_, count_);
+  coarse_.setFromTriplets(triplets_.begin(), triplets_.end());
+  factor_.compute(coarse_);
+  if (factor_.info() != Eigen::Success) {
+    throw std::runtime_error("multigrid: the deflation matrix is not positive definite");
+  }
+}
+
+}  // namespace vicc_glyphs::multigrid_detail
