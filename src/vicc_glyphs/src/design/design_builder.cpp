@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
 
 #include "gradient_channels.hpp"
@@ -34,6 +35,56 @@ double pixelsPerMm(const DiffusionCurveImage& image, const GlyphDesign& design) 
 void replaceColor(std::vector<ColorPoint>& points, const Color& from, const Color& to) {
   for (ColorPoint& point : points) {
     if ((point.rgb - from).cwiseAbs().maxCoeff() <= kColorTolerance) point.rgb = to;
+  }
+}
+
+// The colour that covers most of one side of a curve (colour points are piecewise linear in
+// `position`; each interval counts for the colours at its ends, half each).
+std::optional<Color> dominantColor(const std::vector<ColorPoint>& points) {
+  if (points.empty()) return std::nullopt;
+  std::vector<std::pair<Color, double>> weights;
+  auto add = [&](const Color& rgb, double weight) {
+    for (auto& [color, total] : weights) {
+      if ((color - rgb).cwiseAbs().maxCoeff() <= kColorTolerance) {
+        total += weight;
+        return;
+      }
+    }
+    weights.emplace_back(rgb, weight);
+  };
+  for (size_t i = 0; i + 1 < points.size(); ++i) {
+    const double half = 0.5 * std::abs(points[i + 1].position - points[i].position);
+    add(points[i].rgb, half);
+    add(points[i + 1].rgb, half);
+  }
+  if (points.size() == 1) add(points.front().rgb, 1.0);
+  return std::max_element(weights.begin(), weights.end(),
+                          [](const auto& a, const auto& b) { return a.second < b.second; })
+      ->first;
+}
+
+// The importer records, on each side of a boundary that two shapes share, the neighbour's
+// colour. A region that a level hides or shrinks loses those contacts: its neighbours' records
+// of its colour take its surroundings' colour (the dominant colour outside it), and a shrunk
+// region's outside becomes that colour all round. Otherwise the stale colours would diffuse
+// into the gap as a haze.
+void releaseNeighbourColors(DiffusionCurveImage& image, const std::set<int>& released) {
+  for (int index : released) {
+    if (index < 0 || index >= static_cast<int>(image.curves.size())) continue;
+    DiffusionCurve& curve = image.curves[static_cast<size_t>(index)];
+    const bool left_inside = enclosedSideIsLeft(curve);
+    std::vector<ColorPoint>& outer = left_inside ? curve.right_colors : curve.left_colors;
+    const auto inside = dominantColor(left_inside ? curve.left_colors : curve.right_colors);
+    const auto outside = dominantColor(outer);
+    if (!inside || !outside) continue;
+    for (ColorPoint& point : outer) point.rgb = *outside;
+    // Only the other curves' outer sides: a region of the same colour keeps its own fill.
+    for (size_t other = 0; other < image.curves.size(); ++other) {
+      if (released.count(static_cast<int>(other))) continue;
+      DiffusionCurve& neighbour = image.curves[other];
+      replaceColor(enclosedSideIsLeft(neighbour) ? neighbour.right_colors : neighbour.left_colors,
+                   *inside, *outside);
+    }
   }
 }
 
@@ -243,18 +294,27 @@ DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>
   const size_t icon_curves = image.curves.size();
   std::set<int> hidden;
   for (const Active& a : active) {
+    if (a.encoding->channel != Channel::Hide) continue;
+    const auto& curves = a.encoding->hidden[static_cast<size_t>(a.level)];
+    hidden.insert(curves.begin(), curves.end());
+  }
+  std::set<int> released = hidden;
+  for (const Active& a : active) {
+    if (a.encoding->channel != Channel::Inflate || a.encoding->numbers[a.level] >= 0.0) continue;
+    for (int index : pacemod::selectCurves(image, a.encoding->curves)) released.insert(index);
+  }
+  releaseNeighbourColors(image, released);
+  for (const Active& a : active) {
     const std::vector<int> curves = pacemod::selectCurves(image, a.encoding->curves);
     const size_t level = static_cast<size_t>(a.level);
     if (a.encoding->channel == Channel::FillColor) {
-      for (int index : curves) {
-        DiffusionCurve& curve = image.curves[static_cast<size_t>(index)];
+      // On every curve: the neighbours' records of the recoloured region follow it.
+      for (DiffusionCurve& curve : image.curves) {
         replaceColor(curve.left_colors, a.encoding->replace, a.encoding->colors[level]);
         replaceColor(curve.right_colors, a.encoding->replace, a.encoding->colors[level]);
       }
     } else if (a.encoding->channel == Channel::GlyphScale) {
       scaleAboutCentre(image, curves, a.encoding->numbers[level]);
-    } else if (a.encoding->channel == Channel::Hide) {
-      hidden.insert(a.encoding->hidden[level].begin(), a.encoding->hidden[level].end());
     }
   }
   for (const Active& a : active) {

@@ -233,3 +233,39 @@ TEST(DesignBuild, AModificationNoCurveCanTakeIsAnError) {
   EXPECT_NO_THROW(
       buildGlyph(design, design.levelsFor({{"probability", 95}, {"amount", 5}}), model()));
 }
+
+// Shrunk drops leave the cloud: the gap and the sky around them are background, not a haze of
+// the colours the drops and the cloud recorded where they touched.
+TEST(DesignBuild, ShrunkDropsLeaveNoHaze) {
+  const GlyphDesign design = shipped("rain_forecast_sine");
+  const DiffusionCurveImage light =
+      buildGlyph(design, design.levelsFor({{"probability", 95}, {"amount", 1}}), model(), 256);
+  const RenderResult result = renderDiffusionCurves(light);
+  const cv::Mat& image = result.image;  // CV_32FC3, RGB in [0, 1]
+  auto darkest = [&](double x0, double x1, double y0, double y1) {
+    float lowest = 1.0f;
+    for (int y = static_cast<int>(y0 * image.rows); y < static_cast<int>(y1 * image.rows); ++y) {
+      for (int x = static_cast<int>(x0 * image.cols); x < static_cast<int>(x1 * image.cols); ++x) {
+        const cv::Vec3f& rgb = image.at<cv::Vec3f>(y, x);
+        lowest = std::min({lowest, rgb[0], rgb[1], rgb[2]});
+      }
+    }
+    return lowest;
+  };
+  EXPECT_GT(darkest(0.02, 0.15, 0.72, 0.85), 0.97f) << "left of the drops";
+  EXPECT_GT(darkest(0.38, 0.42, 0.72, 0.76), 0.97f) << "between the drops";
+}
+
+// Hiding drops must not take the colour of the drop that stays (same colour, other curve).
+TEST(DesignBuild, HiddenDropsLeaveTheRemainingDropFilled) {
+  const GlyphDesign design = shipped("rain_forecast_dashes");
+  const DiffusionCurveImage one =
+      buildGlyph(design, design.levelsFor({{"probability", 95}, {"amount", 1}}), model(), 256);
+  ASSERT_EQ(one.curves.size(), 2u);  // the cloud and one drop
+  const DiffusionCurve& drop = one.curves[1];
+  const auto& inside = enclosedSideIsLeftForTest(drop) ? drop.left_colors : drop.right_colors;
+  ASSERT_FALSE(inside.empty());
+  for (const ColorPoint& point : inside) {
+    EXPECT_LT(point.rgb.minCoeff(), 0.7) << "the drop's fill turned to the background";
+  }
+}
