@@ -65,6 +65,14 @@ class PatientPanelTest : public ::testing::Test {
     return widget;
   }
 
+  // A widget the panel creates once the server has answered (e.g. a category check box);
+  // nullptr (and a failure) if it does not appear.
+  template <typename Widget>
+  static Widget* awaitChild(rviz::Panel& panel, const char* name) {
+    waitForPanel([&] { return panel.findChild<Widget*>(name) != nullptr; });
+    return child<Widget>(panel, name);
+  }
+
   static std::string text(rviz::Panel& panel, const char* label) {
     return child<QLabel>(panel, label)->text().toStdString();
   }
@@ -97,7 +105,8 @@ TEST_F(PatientPanelTest, TimelineAndCategoryFilterReachTheServer) {
   EXPECT_EQ(status_.last()->requested_date, kPreOperative);
   EXPECT_FALSE(child<QCheckBox>(*panel, "latest")->isChecked());
 
-  auto* paresis = child<QCheckBox>(*panel, "category_paresis");
+  auto* paresis = awaitChild<QCheckBox>(*panel, "category_paresis");
+  ASSERT_NE(paresis, nullptr);
   ASSERT_TRUE(paresis->isChecked());
   paresis->setChecked(false);
   ASSERT_TRUE(waitForPanel([&] { return shows(kPreOperative, {"paresis"}); }))
@@ -118,7 +127,9 @@ TEST_F(PatientPanelTest, RestoresItsSavedSelection) {
     ASSERT_TRUE(waitForPanel([&] { return slider->maximum() == 1; }));
     slider->setValue(0);
     ASSERT_TRUE(waitForPanel([&] { return shows(kPreOperative, {}); }));
-    child<QCheckBox>(*panel, "category_sensory_disorder")->setChecked(false);
+    auto* sensory = awaitChild<QCheckBox>(*panel, "category_sensory_disorder");
+    ASSERT_NE(sensory, nullptr);  // the boxes come with the server's view, asynchronously
+    sensory->setChecked(false);
     ASSERT_TRUE(waitForPanel([&] { return shows(kPreOperative, {"sensory_disorder"}); }));
     panel->save(saved);
   }
@@ -136,7 +147,9 @@ TEST_F(PatientPanelTest, RestoresItsSavedSelection) {
   auto restored = makePanel(saved);
   ASSERT_TRUE(waitForPanel([&] { return shows(kPreOperative, {"sensory_disorder"}); }))
       << text(*restored, "message_label");
-  EXPECT_FALSE(child<QCheckBox>(*restored, "category_sensory_disorder")->isChecked());
+  auto* restored_sensory = awaitChild<QCheckBox>(*restored, "category_sensory_disorder");
+  ASSERT_NE(restored_sensory, nullptr);
+  EXPECT_FALSE(restored_sensory->isChecked());
 }
 
 TEST_F(PatientPanelTest, ACategoryOutsideTheViewIsReportedAndNotRequested) {
