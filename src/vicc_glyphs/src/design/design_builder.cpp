@@ -88,6 +88,21 @@ void releaseNeighbourColors(DiffusionCurveImage& image, const std::set<int>& rel
   }
 }
 
+// A fill-colour change: the selected curves on both sides, the others' outer sides, where
+// they recorded the recoloured region as their neighbour (a region of the same colour that is
+// not selected keeps its own fill).
+void recolorRegion(DiffusionCurveImage& image, const std::vector<int>& curves, const Color& from,
+                   const Color& to) {
+  for (size_t index = 0; index < image.curves.size(); ++index) {
+    DiffusionCurve& curve = image.curves[index];
+    const bool selected =
+        std::find(curves.begin(), curves.end(), static_cast<int>(index)) != curves.end();
+    const bool left_inside = enclosedSideIsLeft(curve);
+    if (selected || !left_inside) replaceColor(curve.left_colors, from, to);
+    if (selected || left_inside) replaceColor(curve.right_colors, from, to);
+  }
+}
+
 void scaleAboutCentre(DiffusionCurveImage& image, const std::vector<int>& curves, double factor) {
   const Point2 centre(0.5 * image.width, 0.5 * image.height);
   for (int index : curves) {
@@ -308,11 +323,7 @@ DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>
     const std::vector<int> curves = pacemod::selectCurves(image, a.encoding->curves);
     const size_t level = static_cast<size_t>(a.level);
     if (a.encoding->channel == Channel::FillColor) {
-      // On every curve: the neighbours' records of the recoloured region follow it.
-      for (DiffusionCurve& curve : image.curves) {
-        replaceColor(curve.left_colors, a.encoding->replace, a.encoding->colors[level]);
-        replaceColor(curve.right_colors, a.encoding->replace, a.encoding->colors[level]);
-      }
+      recolorRegion(image, curves, a.encoding->replace, a.encoding->colors[level]);
     } else if (a.encoding->channel == Channel::GlyphScale) {
       scaleAboutCentre(image, curves, a.encoding->numbers[level]);
     }
