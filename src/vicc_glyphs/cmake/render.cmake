@@ -6,6 +6,7 @@ add_library(vicc_glyphs_render
   src/render/grid_problem.cpp
   src/render/multigrid_levels.cpp
   src/render/multigrid_deflation.cpp
+  src/render/multigrid_local_relaxation.cpp
   src/render/banded_cholesky.cpp
   src/render/multigrid.cpp
   src/render/curve_antialiasing.cpp
@@ -44,7 +45,8 @@ if(CATKIN_ENABLE_TESTING)
     test/render/DegenerateInputTest.cpp
     test/render/BarrierConvergenceTest.cpp
     test/render/GalerkinCoarseningTest.cpp
-    test/render/DeflationTest.cpp)
+    test/render/DeflationTest.cpp
+    test/render/LocalRelaxationTest.cpp)
   target_compile_options(vicc_glyphs_render_test PRIVATE ${VICC_WARNINGS})
   # GalerkinCoarseningTest checks the solver's internal operators.
   target_include_directories(vicc_glyphs_render_test PRIVATE src/render)

@@ -100,7 +100,9 @@ TEST(BarrierConvergenceTest, LeakyBarriersConvergeToTheDirectSolve) {
   // true error: the correction alone is about 5x optimistic behind the gap.
   EXPECT_LE(solve.max_error, solve.report.error_estimates.back());
   const Solve twice = solveAndCompare(leakyBarrierImage(128), 2 * solve.report.fine_cycles);
-  EXPECT_LE(twice.mae, 0.1 * solve.mae + 1e-6);  // still converging, not stalled
+  // Still converging, not stalled (the old solvers stalled at 1e-4 to 1e-3), down to the floor
+  // of float arithmetic: about 2e-6 here (5 iterations reach 2.9e-6, 10 reach 2.2e-6).
+  EXPECT_LE(twice.mae, std::max(0.1 * solve.mae, 1e-5));
 }
 
 // How fast, with the Galerkin coarse operators: the mean error falls by more than 1000x in 5

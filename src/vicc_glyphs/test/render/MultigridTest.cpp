@@ -57,8 +57,10 @@ INSTANTIATE_TEST_SUITE_P(
                       std::pair{std::string("icon_like"), iconLikeImage(256, 256)}),
     [](const auto& info) { return info.param.first; });
 
-MultigridReport fixedIterations(const DiffusionCurveImage& image, int iterations) {
+MultigridReport fixedIterations(const DiffusionCurveImage& image, int iterations,
+                                int local_relaxation = MultigridOptions().local_relaxation) {
   MultigridOptions options;
+  options.local_relaxation = local_relaxation;
   options.tolerance = 0.0;
   options.fine_cycles = iterations;
   options.record_residuals = true;
@@ -99,7 +101,10 @@ TEST(MultigridTest, FixedIterationsIgnoreTheTolerance) {
 }
 
 TEST(MultigridTest, ErrorEstimateFallsTenfoldPerIterationForClosedCurves) {
-  const MultigridReport report = fixedIterations(gradientCircleImage(256, 256), 4);
+  // The V-cycle-preconditioned CG's rate, from FMG's start as it is: the local relaxation of
+  // the start (LocalRelaxationTest) removes its few bad spots, after which the first iteration
+  // has less to gain (7x here).
+  const MultigridReport report = fixedIterations(gradientCircleImage(256, 256), 4, 0);
   const std::vector<double>& e = report.error_estimates;
   ASSERT_EQ(e.size(), 4u);
   EXPECT_GT(e[0], 1e-4);  // the FMG start is not already converged

@@ -41,6 +41,11 @@ struct MultigridOptions {
   /// 128 px squares) from CG's directions (see docs/rendering.md): regions behind such necks,
   /// like the ladybug's leg pockets, then converge in fewer iterations.
   bool deflation = true;
+  /// Symmetric Gauss-Seidel sweeps (forwards and backwards) on the finest level's start around
+  /// the pixels whose residual is large, before CG (0: none): FMG's start is poor at a few
+  /// spots that P cannot represent (sharp wave tips, curve ends), and the V-cycle reduces them
+  /// only about tenfold per iteration (see docs/rendering.md).
+  int local_relaxation = 2;
   /// > 0 (the default): iterate on the finest level until the error estimate, the largest
   /// magnitude of the V-cycle's correction B r over the free pixels and channels (colour
   /// units, 0..1), is at most this, at most `max_fine_cycles` times; the estimates are then
