@@ -42,6 +42,17 @@ Value evaluateOnSpan(const std::vector<double>& t, int p, int span, Value* local
   return local[p];
 }
 
+// Evaluating with unit coefficient vectors yields all p + 1 basis values at once; `unit` holds
+// p + 1 vectors of any size.
+template <typename Vector>
+Vector unitBasis(const std::vector<double>& t, int p, int span, Vector* unit, double u, int order) {
+  for (int j = 0; j <= p; ++j) {
+    unit[j] = Vector::Zero(p + 1);
+    unit[j][j] = 1.0;
+  }
+  return evaluateOnSpan(t, p, span, unit, u, order);
+}
+
 }  // namespace
 
 BSplineCurve::BSplineCurve(int degree, std::vector<double> knots,
@@ -165,12 +176,18 @@ BasisRow BSplineCurve::basisAt(double u, int order) const {
   if (order < 0) fail("derivative order must not be negative");
   const double v = clampToDomain(u);
   const int span = findSpan(v);
-  // Evaluating with unit coefficient vectors yields all p + 1 basis values at once.
-  std::vector<Eigen::VectorXd> unit(degree_ + 1, Eigen::VectorXd::Zero(degree_ + 1));
-  for (int j = 0; j <= degree_; ++j) unit[j][j] = 1.0;
   BasisRow row;
   row.first_index = span - degree_;
-  row.values = evaluateOnSpan(knots_, degree_, span, unit.data(), v, order);
+  // Fitting matrices take a row per sample: no heap allocation for usual degrees.
+  constexpr int kStackDegree = 7;
+  if (degree_ <= kStackDegree) {
+    using Small = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kStackDegree + 1, 1>;
+    std::array<Small, kStackDegree + 1> unit;
+    row.values = unitBasis(knots_, degree_, span, unit.data(), v, order);
+  } else {
+    std::vector<Eigen::VectorXd> unit(degree_ + 1);
+    row.values = unitBasis(knots_, degree_, span, unit.data(), v, order);
+  }
   return row;
 }
 

@@ -154,15 +154,16 @@ std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
                                    std::map<int, std::unique_ptr<WavedContour>>& waved,
                                    const Context& context) {
   std::map<int, int> left;
+  // Sampled once; a round samples again only the contours it rebuilt.
+  std::vector<Polyline> lines;
+  std::vector<std::vector<double>> parameters(image.curves.size());
+  for (int i = 0; i < static_cast<int>(image.curves.size()); ++i) {
+    const auto found = waved.find(i);
+    lines.push_back(found != waved.end() ? sampleWave(*found->second->wave, parameters[i])
+                                         : sampleCurve(image.curves[i], 16));
+  }
   const int last_round = kMaxRepairRounds + kMaxFlatteningRounds;
   for (int round = 0; round <= last_round; ++round) {
-    std::vector<Polyline> lines;
-    std::vector<std::vector<double>> parameters(image.curves.size());
-    for (int i = 0; i < static_cast<int>(image.curves.size()); ++i) {
-      const auto found = waved.find(i);
-      lines.push_back(found != waved.end() ? sampleWave(*found->second->wave, parameters[i])
-                                           : sampleCurve(image.curves[i], 16));
-    }
     const std::vector<Crossing> crossings = findCrossings(lines, kCrossingCellPx);
     std::map<int, bool> changed;
     left.clear();
@@ -177,7 +178,11 @@ std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
       }
     }
     if (changed.empty()) break;
-    for (const auto& entry : changed) build(*waved[entry.first], context);
+    for (const auto& entry : changed) {
+      WavedContour& contour = *waved[entry.first];
+      build(contour, context);
+      lines[entry.first] = sampleWave(*contour.wave, parameters[entry.first]);
+    }
   }
   return left;
 }
