@@ -43,13 +43,10 @@ Value evaluateOnSpan(const std::vector<double>& t, int p, int span, Value* local
 }
 
 // Evaluating with unit coefficient vectors yields all p + 1 basis values at once; `unit` holds
-// p + 1 vectors of any size.
+// p + 1 zero vectors of at least p + 1 entries.
 template <typename Vector>
 Vector unitBasis(const std::vector<double>& t, int p, int span, Vector* unit, double u, int order) {
-  for (int j = 0; j <= p; ++j) {
-    unit[j] = Vector::Zero(p + 1);
-    unit[j][j] = 1.0;
-  }
+  for (int j = 0; j <= p; ++j) unit[j][j] = 1.0;
   return evaluateOnSpan(t, p, span, unit, u, order);
 }
 
@@ -159,7 +156,10 @@ Point2 BSplineCurve::pointAt(double u) const { return derivativeAt(u, 0); }
 Point2 BSplineCurve::derivativeAt(double u, int order) const {
   if (order < 0) fail("derivative order must not be negative");
   const double v = clampToDomain(u);
-  const int span = findSpan(v);
+  return evaluateOn(v, findSpan(v), order);
+}
+
+Point2 BSplineCurve::evaluateOn(double v, int span, int order) const {
   const auto first = control_points_.begin() + (span - degree_);
   // Curves are evaluated millions of times per glyph: no heap allocation for usual degrees.
   constexpr int kStackDegree = 7;
@@ -181,11 +181,13 @@ BasisRow BSplineCurve::basisAt(double u, int order) const {
   // Fitting matrices take a row per sample: no heap allocation for usual degrees.
   constexpr int kStackDegree = 7;
   if (degree_ <= kStackDegree) {
-    using Small = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kStackDegree + 1, 1>;
+    // Fixed size (unrolled): the unused tail stays zero, the p + 1 values are the same.
+    using Small = Eigen::Matrix<double, kStackDegree + 1, 1>;
     std::array<Small, kStackDegree + 1> unit;
-    row.values = unitBasis(knots_, degree_, span, unit.data(), v, order);
+    unit.fill(Small::Zero());
+    row.values = unitBasis(knots_, degree_, span, unit.data(), v, order).head(degree_ + 1);
   } else {
-    std::vector<Eigen::VectorXd> unit(degree_ + 1);
+    std::vector<Eigen::VectorXd> unit(degree_ + 1, Eigen::VectorXd::Zero(degree_ + 1));
     row.values = unitBasis(knots_, degree_, span, unit.data(), v, order);
   }
   return row;
@@ -198,6 +200,29 @@ std::vector<Point2> BSplineCurve::sample(int count) const {
     const double w = static_cast<double>(i) / (count - 1);
     points[i] = pointAt((1.0 - w) * domainBegin() + w * domainEnd());
   }
+  return points;
+}
+
+std::vector<Point2> BSplineCurve::sampleSpans(int per_span, std::vector<double>& parameters) const {
+  if (per_span < 1) fail("sampling needs at least 1 point per knot span");
+  const std::vector<double> breaks = breakpoints();
+  std::vector<Point2> points;
+  parameters.clear();
+  int span = degree_;
+  for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+    for (int k = 0; k < per_span; ++k) {
+      const double u = breaks[i] + (breaks[i + 1] - breaks[i]) * k / per_span;
+      parameters.push_back(u);
+      if (u >= domainEnd()) {  // round-off on the last piece: findSpan's special case
+        points.push_back(pointAt(u));
+        continue;
+      }
+      while (knots_[span + 1] <= u) ++span;  // findSpan: the last knot <= u
+      points.push_back(evaluateOn(u, span, 0));
+    }
+  }
+  parameters.push_back(breaks.back());
+  points.push_back(pointAt(breaks.back()));
   return points;
 }
 

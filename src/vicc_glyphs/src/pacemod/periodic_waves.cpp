@@ -100,18 +100,7 @@ std::unique_ptr<WavedContour> prepare(const DiffusionCurve& curve, int index,
 
 // Polyline of the wave's spline with the spline parameter (= original arc length) per point.
 Polyline sampleWave(const ContourWave& wave, std::vector<double>& parameters) {
-  Polyline line;
-  parameters.clear();
-  const std::vector<double> breaks = wave.curve.breakpoints();
-  for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
-    for (int k = 0; k < kSamplesPerSpan; ++k) {
-      parameters.push_back(breaks[i] + (breaks[i + 1] - breaks[i]) * k / kSamplesPerSpan);
-      line.push_back(wave.curve.pointAt(parameters.back()));
-    }
-  }
-  parameters.push_back(breaks.back());
-  line.push_back(wave.curve.pointAt(breaks.back()));
-  return line;
+  return wave.curve.sampleSpans(kSamplesPerSpan, parameters);
 }
 
 // Cyclic arc-length distance between two points of a closed contour.
