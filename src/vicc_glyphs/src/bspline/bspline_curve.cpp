@@ -19,10 +19,13 @@ namespace {
 // (local[j] belongs to index span - p + j). First the derivative de Boor points of Eq. 2.42 are
 // formed `order` times, then the de Boor recursion of Eq. 2.40 runs with the lowered degree.
 // Templated so that the same code yields curve points (Point2) and basis functions (a vector of
-// unit coefficients).
-template <typename Value>
-Value evaluateOnSpan(const std::vector<double>& t, int p, int span, Value* local, double u,
-                     int order) {
+// unit coefficients). kDegree and kOrder >= 0 fix the degree and order at compile time (the
+// loops unroll; the operations and their order stay the same); -1 takes `degree`, `derivative`.
+template <int kDegree = -1, int kOrder = -1, typename Value>
+Value evaluateOnSpan(const std::vector<double>& t, int degree, int span, Value* local, double u,
+                     int derivative) {
+  const int p = kDegree >= 0 ? kDegree : degree;
+  const int order = kOrder >= 0 ? kOrder : derivative;
   if (order > p) return Value(local[0] * 0.0);
   for (int r = 1; r <= order; ++r) {
     for (int j = p; j >= r; --j) {
@@ -161,6 +164,11 @@ Point2 BSplineCurve::derivativeAt(double u, int order) const {
 
 Point2 BSplineCurve::evaluateOn(double v, int span, int order) const {
   const auto first = control_points_.begin() + (span - degree_);
+  if (degree_ == 3 && order == 0) {  // the common case: cubic curve points
+    std::array<Point2, 4> local;
+    std::copy(first, first + 4, local.begin());
+    return evaluateOnSpan<3, 0>(knots_, 3, span, local.data(), v, 0);
+  }
   // Curves are evaluated millions of times per glyph: no heap allocation for usual degrees.
   constexpr int kStackDegree = 7;
   if (degree_ <= kStackDegree) {
