@@ -47,10 +47,10 @@ Value evaluateOnSpan(const std::vector<double>& t, int degree, int span, Value* 
 
 // Evaluating with unit coefficient vectors yields all p + 1 basis values at once; `unit` holds
 // p + 1 zero vectors of at least p + 1 entries.
-template <typename Vector>
+template <int kDegree = -1, typename Vector>
 Vector unitBasis(const std::vector<double>& t, int p, int span, Vector* unit, double u, int order) {
   for (int j = 0; j <= p; ++j) unit[j][j] = 1.0;
-  return evaluateOnSpan(t, p, span, unit, u, order);
+  return evaluateOnSpan<kDegree>(t, p, span, unit, u, order);
 }
 
 }  // namespace
@@ -188,7 +188,11 @@ BasisRow BSplineCurve::basisAt(double u, int order) const {
   row.first_index = span - degree_;
   // Fitting matrices take a row per sample: no heap allocation for usual degrees.
   constexpr int kStackDegree = 7;
-  if (degree_ <= kStackDegree) {
+  if (degree_ == 3) {  // the common case: unrolled
+    std::array<Eigen::Vector4d, 4> unit;
+    unit.fill(Eigen::Vector4d::Zero());
+    row.values = unitBasis<3>(knots_, 3, span, unit.data(), v, order);
+  } else if (degree_ <= kStackDegree) {
     // Fixed size (unrolled): the unused tail stays zero, the p + 1 values are the same.
     using Small = Eigen::Matrix<double, kStackDegree + 1, 1>;
     std::array<Small, kStackDegree + 1> unit;
