@@ -19,10 +19,13 @@ namespace {
 // (local[j] belongs to index span - p + j). First the derivative de Boor points of Eq. 2.42 are
 // formed `order` times, then the de Boor recursion of Eq. 2.40 runs with the lowered degree.
 // Templated so that the same code yields curve points (Point2) and basis functions (a vector of
-// unit coefficients).
-template <typename Value>
-Value evaluateOnSpan(const std::vector<double>& t, int p, int span, Value* local, double u,
-                     int order) {
+// unit coefficients). kDegree and kOrder >= 0 fix the degree and order at compile time (the
+// loops unroll; the operations and their order stay the same); -1 takes `degree`, `derivative`.
+template <int kDegree = -1, int kOrder = -1, typename Value>
+Value evaluateOnSpan(const std::vector<double>& t, int degree, int span, Value* local, double u,
+                     int derivative) {
+  const int p = kDegree >= 0 ? kDegree : degree;
+  const int order = kOrder >= 0 ? kOrder : derivative;
   if (order > p) return Value(local[0] * 0.0);
   for (int r = 1; r <= order; ++r) {
     for (int j = p; j >= r; --j) {
@@ -40,6 +43,14 @@ Value evaluateOnSpan(const std::vector<double>& t, int p, int span, Value* local
     }
   }
   return local[p];
+}
+
+// Evaluating with unit coefficient vectors yields all p + 1 basis values at once; `unit` holds
+// p + 1 zero vectors of at least p + 1 entries.
+template <int kDegree = -1, typename Vector>
+Vector unitBasis(const std::vector<double>& t, int p, int span, Vector* unit, double u, int order) {
+  for (int j = 0; j <= p; ++j) unit[j][j] = 1.0;
+  return evaluateOnSpan<kDegree>(t, p, span, unit, u, order);
 }
 
 }  // namespace
@@ -148,8 +159,16 @@ Point2 BSplineCurve::pointAt(double u) const { return derivativeAt(u, 0); }
 Point2 BSplineCurve::derivativeAt(double u, int order) const {
   if (order < 0) fail("derivative order must not be negative");
   const double v = clampToDomain(u);
-  const int span = findSpan(v);
+  return evaluateOn(v, findSpan(v), order);
+}
+
+Point2 BSplineCurve::evaluateOn(double v, int span, int order) const {
   const auto first = control_points_.begin() + (span - degree_);
+  if (degree_ == 3 && order == 0) {  // the common case: cubic curve points
+    std::array<Point2, 4> local;
+    std::copy(first, first + 4, local.begin());
+    return evaluateOnSpan<3, 0>(knots_, 3, span, local.data(), v, 0);
+  }
   // Curves are evaluated millions of times per glyph: no heap allocation for usual degrees.
   constexpr int kStackDegree = 7;
   if (degree_ <= kStackDegree) {
@@ -165,12 +184,24 @@ BasisRow BSplineCurve::basisAt(double u, int order) const {
   if (order < 0) fail("derivative order must not be negative");
   const double v = clampToDomain(u);
   const int span = findSpan(v);
-  // Evaluating with unit coefficient vectors yields all p + 1 basis values at once.
-  std::vector<Eigen::VectorXd> unit(degree_ + 1, Eigen::VectorXd::Zero(degree_ + 1));
-  for (int j = 0; j <= degree_; ++j) unit[j][j] = 1.0;
   BasisRow row;
   row.first_index = span - degree_;
-  row.values = evaluateOnSpan(knots_, degree_, span, unit.data(), v, order);
+  // Fitting matrices take a row per sample: no heap allocation for usual degrees.
+  constexpr int kStackDegree = 7;
+  if (degree_ == 3) {  // the common case: unrolled
+    std::array<Eigen::Vector4d, 4> unit;
+    unit.fill(Eigen::Vector4d::Zero());
+    row.values = unitBasis<3>(knots_, 3, span, unit.data(), v, order);
+  } else if (degree_ <= kStackDegree) {
+    // Fixed size (unrolled): the unused tail stays zero, the p + 1 values are the same.
+    using Small = Eigen::Matrix<double, kStackDegree + 1, 1>;
+    std::array<Small, kStackDegree + 1> unit;
+    unit.fill(Small::Zero());
+    row.values = unitBasis(knots_, degree_, span, unit.data(), v, order).head(degree_ + 1);
+  } else {
+    std::vector<Eigen::VectorXd> unit(degree_ + 1, Eigen::VectorXd::Zero(degree_ + 1));
+    row.values = unitBasis(knots_, degree_, span, unit.data(), v, order);
+  }
   return row;
 }
 
@@ -181,6 +212,29 @@ std::vector<Point2> BSplineCurve::sample(int count) const {
     const double w = static_cast<double>(i) / (count - 1);
     points[i] = pointAt((1.0 - w) * domainBegin() + w * domainEnd());
   }
+  return points;
+}
+
+std::vector<Point2> BSplineCurve::sampleSpans(int per_span, std::vector<double>& parameters) const {
+  if (per_span < 1) fail("sampling needs at least 1 point per knot span");
+  const std::vector<double> breaks = breakpoints();
+  std::vector<Point2> points;
+  parameters.clear();
+  int span = degree_;
+  for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+    for (int k = 0; k < per_span; ++k) {
+      const double u = breaks[i] + (breaks[i + 1] - breaks[i]) * k / per_span;
+      parameters.push_back(u);
+      if (u >= domainEnd()) {  // round-off on the last piece: findSpan's special case
+        points.push_back(pointAt(u));
+        continue;
+      }
+      while (knots_[span + 1] <= u) ++span;  // findSpan: the last knot <= u
+      points.push_back(evaluateOn(u, span, 0));
+    }
+  }
+  parameters.push_back(breaks.back());
+  points.push_back(pointAt(breaks.back()));
   return points;
 }
 

@@ -11,9 +11,21 @@
 
 namespace vicc_glyphs {
 namespace pacemod {
+namespace detail {
+
+struct FrameSamples {
+  /// Per layout peak (at a smooth closing point the mean of both ends' normals).
+  std::vector<ContourSample> peaks;
+  /// Per straight span of the layout (the rectangle's flanks): stripSamples.
+  std::vector<std::vector<ContourSample>> flanks;
+};
+
+}  // namespace detail
+
 namespace {
 
 using bspline::BSplineCurve;
+using detail::ContourSample;
 using detail::OffsetFrame;
 using detail::StripPiece;
 
@@ -106,8 +118,7 @@ int cornerOfPeak(const ContourFrame& frame, std::size_t i, double amplitude) {
   return best;
 }
 
-Placement placePeak(const ContourFrame& frame, const OffsetFrame& offsets, std::size_t i,
-                    double amplitude) {
+Placement placePeak(const ContourFrame& frame, std::size_t i, double amplitude) {
   const WavePeak& peak = frame.layout.peaks[i];
   Placement placement;
   placement.corner = cornerOfPeak(frame, i, amplitude);
@@ -126,16 +137,31 @@ Placement placePeak(const ContourFrame& frame, const OffsetFrame& offsets, std::
     placement.growth = strips ? 1.0 / corner.stretch(peak.sign * amplitude) : 1.0;
     return placement;
   }
-  const double l = peak.arc_length, end = frame.layout.length;
-  Point2 normal = offsets.normal(l);
-  if (l <= 0.0 || l >= end) {  // a smooth closing point: both ends move the same way
-    const Point2 mean = offsets.normal(0.0) + offsets.normal(end);
-    if (mean.norm() > 1e-9) normal = mean.normalized();
-  }
-  placement.parameter = l;
-  placement.base = offsets.original.pointAt(offsets.table.parameterAt(l));
-  placement.direction = peak.sign * normal;
+  const ContourSample& sample = frame.samples->peaks[i];
+  placement.parameter = peak.arc_length;
+  placement.base = sample.point;
+  placement.direction = peak.sign * sample.normal;
   return placement;
+}
+
+// The original's points and normals that placePeak and smoothWave take, for every amplitude.
+std::shared_ptr<const detail::FrameSamples> frameSamples(const ContourFrame& frame,
+                                                         const OffsetFrame& offsets) {
+  auto samples = std::make_shared<detail::FrameSamples>();
+  const double end = frame.layout.length;
+  for (const WavePeak& peak : frame.layout.peaks) {
+    const double l = peak.arc_length;
+    ContourSample sample = offsets.sample(l);
+    if (l <= 0.0 || l >= end) {  // a smooth closing point: both ends move the same way
+      const Point2 mean = offsets.normal(0.0) + offsets.normal(end);
+      if (mean.norm() > 1e-9) sample.normal = mean.normalized();
+    }
+    samples->peaks.push_back(sample);
+  }
+  for (const ArcInterval& span : frame.layout.straight_spans) {
+    samples->flanks.push_back(detail::stripSamples(offsets, span.begin, span.end));
+  }
+  return samples;
 }
 
 double appliedOffset(const ContourWave& wave, std::size_t i) {
@@ -270,22 +296,22 @@ std::size_t peakAt(const WaveLayout& layout, double l) {
 
 // Sine and rectangle: the offset fit of the wave's profile, then Fowler-Bartels for the knot
 // points and the icon's corners; the rectangle's flanks become strips.
-BSplineCurve smoothWave(const ContourFrame& frame, const OffsetFrame& offsets,
-                        const ContourWave& wave) {
+BSplineCurve smoothWave(const ContourFrame& frame, const ContourWave& wave) {
   const detail::OffsetFit::Offset offset = [&wave](double l) { return waveOffsetAt(wave, l); };
   const std::vector<Point2> corner_targets = frame.offset_fit->cornerTargets(offset);
   BSplineCurve curve =
       meetTargets(frame.offset_fit->fit(offset, corner_targets), frame, wave, corner_targets);
   if (wave.layout.straight_spans.empty()) return curve;
   std::vector<Point2> points = curve.controlPoints();
-  for (const ArcInterval& span : wave.layout.straight_spans) {
+  for (std::size_t k = 0; k < wave.layout.straight_spans.size(); ++k) {
+    const ArcInterval& span = wave.layout.straight_spans[k];
     // An icon corner inside the flank splits it; the fit already follows the contour there.
     const int first = cornerControlIndex(curve, span.begin);
     if (cornerControlIndex(curve, span.end) != first + 3) continue;
     detail::fitStrip(points, first,
                      {span.begin, span.end, appliedOffset(wave, peakAt(wave.layout, span.begin)),
                       appliedOffset(wave, peakAt(wave.layout, span.end))},
-                     offsets);
+                     frame.samples->flanks[k]);
   }
   curve.setControlPoints(std::move(points));
   return curve;
@@ -387,8 +413,10 @@ ContourFrame contourFrame(const BSplineCurve& original, const bspline::ArcLength
   ContourFrame frame{waveLayout(waveform, wave_count, table.totalLength()),
                      bspline::signedArea(original),
                      {},
+                     nullptr,
                      nullptr};
   frame.corners = contourCorners(original, table, frame.area);
+  frame.samples = frameSamples(frame, OffsetFrame{original, table, frame.area});
   if (waveform == Waveform::Sine || waveform == Waveform::Rectangle) {
     frame.offset_fit = adaptedFit(original, table, frame);
   }
@@ -415,7 +443,7 @@ ContourWave modifyContour(const ContourFrame& frame, const BSplineCurve& origina
       wave.translations.push_back(wave.translations.front());
       continue;
     }
-    const Placement placement = placePeak(frame, offsets, i, amplitude);
+    const Placement placement = placePeak(frame, i, amplitude);
     GuardResult allowed =
         guard ? guard->limit(placement.base, placement.direction, amplitude, placement.growth)
               : GuardResult{std::max(amplitude, 0.0), false, 0};
@@ -435,7 +463,7 @@ ContourWave modifyContour(const ContourFrame& frame, const BSplineCurve& origina
   switch (wave.layout.waveform) {
     case Waveform::Sine:
     case Waveform::Rectangle:
-      wave.curve = smoothWave(frame, offsets, wave);
+      wave.curve = smoothWave(frame, wave);
       break;
     case Waveform::Triangle:
     case Waveform::Sawtooth:

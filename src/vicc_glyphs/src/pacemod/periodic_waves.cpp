@@ -100,18 +100,7 @@ std::unique_ptr<WavedContour> prepare(const DiffusionCurve& curve, int index,
 
 // Polyline of the wave's spline with the spline parameter (= original arc length) per point.
 Polyline sampleWave(const ContourWave& wave, std::vector<double>& parameters) {
-  Polyline line;
-  parameters.clear();
-  const std::vector<double> breaks = wave.curve.breakpoints();
-  for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
-    for (int k = 0; k < kSamplesPerSpan; ++k) {
-      parameters.push_back(breaks[i] + (breaks[i + 1] - breaks[i]) * k / kSamplesPerSpan);
-      line.push_back(wave.curve.pointAt(parameters.back()));
-    }
-  }
-  parameters.push_back(breaks.back());
-  line.push_back(wave.curve.pointAt(breaks.back()));
-  return line;
+  return wave.curve.sampleSpans(kSamplesPerSpan, parameters);
 }
 
 // Cyclic arc-length distance between two points of a closed contour.
@@ -154,15 +143,16 @@ std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
                                    std::map<int, std::unique_ptr<WavedContour>>& waved,
                                    const Context& context) {
   std::map<int, int> left;
+  // Sampled once; a round samples again only the contours it rebuilt.
+  std::vector<Polyline> lines;
+  std::vector<std::vector<double>> parameters(image.curves.size());
+  for (int i = 0; i < static_cast<int>(image.curves.size()); ++i) {
+    const auto found = waved.find(i);
+    lines.push_back(found != waved.end() ? sampleWave(*found->second->wave, parameters[i])
+                                         : sampleCurve(image.curves[i], 16));
+  }
   const int last_round = kMaxRepairRounds + kMaxFlatteningRounds;
   for (int round = 0; round <= last_round; ++round) {
-    std::vector<Polyline> lines;
-    std::vector<std::vector<double>> parameters(image.curves.size());
-    for (int i = 0; i < static_cast<int>(image.curves.size()); ++i) {
-      const auto found = waved.find(i);
-      lines.push_back(found != waved.end() ? sampleWave(*found->second->wave, parameters[i])
-                                           : sampleCurve(image.curves[i], 16));
-    }
     const std::vector<Crossing> crossings = findCrossings(lines, kCrossingCellPx);
     std::map<int, bool> changed;
     left.clear();
@@ -177,7 +167,11 @@ std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
       }
     }
     if (changed.empty()) break;
-    for (const auto& entry : changed) build(*waved[entry.first], context);
+    for (const auto& entry : changed) {
+      WavedContour& contour = *waved[entry.first];
+      build(contour, context);
+      lines[entry.first] = sampleWave(*contour.wave, parameters[entry.first]);
+    }
   }
   return left;
 }

@@ -29,6 +29,19 @@ Point2 OffsetFrame::offsetPoint(double l, double w) const {
   return original.pointAt(table.parameterAt(l)) + w * normal(l);
 }
 
+ContourSample OffsetFrame::sample(double l) const {
+  return {original.pointAt(table.parameterAt(l)), normal(l)};
+}
+
+std::vector<ContourSample> stripSamples(const OffsetFrame& frame, double l0, double l1) {
+  std::vector<ContourSample> samples;
+  for (int k = 1; k <= kStripSamples; ++k) {
+    const double t = static_cast<double>(k) / (kStripSamples + 1);
+    samples.push_back(frame.sample(l0 + t * (l1 - l0)));
+  }
+  return samples;
+}
+
 // Points of the circular arc of radius |w| around `corner` between its offset point (on the
 // bisector) and the offset of the side after it (`side` +1) or before it (-1), excluding both
 // ends, ordered along the contour: the offset contour outside the corner's angle.
@@ -51,6 +64,11 @@ std::vector<Point2> outerArc(const ContourCorner& corner, double w, int side) {
 
 void fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
               const OffsetFrame& frame) {
+  fitStrip(points, first, piece, stripSamples(frame, piece.l0, piece.l1));
+}
+
+void fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
+              const std::vector<ContourSample>& samples) {
   const Point2 p0 = points[first], p3 = points[first + 3];
   // The offset path with the curve parameter of each point: the arc-length fraction along the
   // piece, or (once a corner changed the path) the chord length along it.
@@ -68,8 +86,8 @@ void fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
   addArc(piece.corner_at_begin, piece.w0, +1);
   for (int k = 1; k <= kStripSamples; ++k) {
     const double t = static_cast<double>(k) / (kStripSamples + 1);
-    const Point2 q =
-        frame.offsetPoint(piece.l0 + t * (piece.l1 - piece.l0), (1 - t) * piece.w0 + t * piece.w1);
+    const ContourSample& sample = samples[k - 1];
+    const Point2 q = sample.point + ((1 - t) * piece.w0 + t * piece.w1) * sample.normal;
     if ((piece.corner_at_begin && piece.corner_at_begin->pastBisector(q, +1)) ||
         (piece.corner_at_end && piece.corner_at_end->pastBisector(q, -1))) {
       by_chord = true;

@@ -16,6 +16,13 @@ namespace vicc_glyphs {
 namespace pacemod {
 namespace detail {
 
+/// The original's point and outward normal at one arc length: the offset point by w is
+/// point + w * normal.
+struct ContourSample {
+  Point2 point = Point2::Zero();
+  Point2 normal = Point2::Zero();
+};
+
 /// The original contour (parametrised by its arc length through `table`) and its orientation.
 struct OffsetFrame {
   const bspline::BSplineCurve& original;
@@ -26,6 +33,8 @@ struct OffsetFrame {
   Point2 normal(double l) const;
   /// The original's point at arc length l moved by w along normal(l).
   Point2 offsetPoint(double l, double w) const;
+  /// The original's point and normal(l) at arc length l.
+  ContourSample sample(double l) const;
 };
 
 /// A strip piece: arc lengths and offsets at its ends, and the icon corner at either end (null
@@ -40,6 +49,12 @@ struct StripPiece {
 /// points[first .. first + 3] (its ends stay), by least squares with chord-length parameters.
 void fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
               const OffsetFrame& frame);
+/// The places inside a piece from arc length l0 to l1 that its strip follows. They do not
+/// depend on the offsets: a piece fitted for several amplitudes needs them once.
+std::vector<ContourSample> stripSamples(const OffsetFrame& frame, double l0, double l1);
+/// fitStrip on `samples` = stripSamples(frame, piece.l0, piece.l1).
+void fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
+              const std::vector<ContourSample>& samples);
 
 }  // namespace detail
 }  // namespace pacemod

@@ -62,12 +62,18 @@ class BSplineCurve {
 
   /// Samples `count` >= 2 points at parameters equally spaced over the domain.
   std::vector<Point2> sample(int count) const;
+  /// `per_span` >= 1 points on each polynomial piece (between breakpoints) at equally spaced
+  /// parameters from its start, then the domain end; their parameters go to `parameters`. The
+  /// points equal pointAt's; the pieces are walked in order instead of searched per point.
+  std::vector<Point2> sampleSpans(int per_span, std::vector<double>& parameters) const;
   /// True when the first and last curve points coincide within `tolerance`.
   bool isClosed(double tolerance = 1e-9) const;
 
  private:
   void validate() const;
   double clampToDomain(double u) const;
+  /// derivativeAt for a v in the domain whose knot span findSpan(v) is `span`.
+  Point2 evaluateOn(double v, int span, int order) const;
 
   int degree_;
   std::vector<double> knots_;

@@ -56,16 +56,19 @@ struct ContourWave {
 
 namespace detail {
 class OffsetFit;
-}
+struct FrameSamples;
+}  // namespace detail
 
 /// What a contour's wave is built on and that does not depend on the amplitudes: the layout,
-/// the contour's corners and, for the sine and the rectangle, the factorised least-squares fit
-/// onto their knots. Built once per contour, reused by every repair round.
+/// the contour's corners, the original's points and normals where every wave takes them and,
+/// for the sine and the rectangle, the factorised least-squares fit onto their knots. Built
+/// once per contour, reused by every repair round.
 struct ContourFrame {
   WaveLayout layout;
   double area = 0.0;                   ///< signed area of the original (orientation)
   std::vector<ContourCorner> corners;  ///< of the original contour
   std::shared_ptr<const detail::OffsetFit> offset_fit;  ///< sine and rectangle
+  std::shared_ptr<const detail::FrameSamples> samples;
 };
 
 /// Throws std::invalid_argument for an open curve or wave_count < 1.
