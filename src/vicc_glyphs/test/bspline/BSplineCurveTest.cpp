@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "vicc_glyphs/bspline/bspline_curve.hpp"
 
@@ -15,6 +16,23 @@ namespace {
 BSplineCurve wavyCurve() {
   return BSplineCurve(3, {0, 0, 0, 0, 0.7, 1.5, 1.5, 2.6, 4, 4, 4, 4},
                       {{0, 0}, {1, 3}, {3, 4}, {5, 1}, {6, -2}, {8, 0}, {9, 4}, {12, 3}});
+}
+
+TEST(BSplineCurveTest, SpanSamplesArePointAtOfEachPieceInOrder) {
+  const BSplineCurve curve = wavyCurve();  // pieces [0, 0.7], [0.7, 1.5], [1.5, 2.6], [2.6, 4]
+  std::vector<double> parameters;
+  const std::vector<Point2> points = curve.sampleSpans(3, parameters);
+  const std::vector<double> expected = {
+      0,   0.7 / 3,       1.4 / 3,       0.7, 0.7 + 0.8 / 3, 0.7 + 1.6 / 3,
+      1.5, 1.5 + 1.1 / 3, 1.5 + 2.2 / 3, 2.6, 2.6 + 1.4 / 3, 2.6 + 2.8 / 3,
+      4};
+  ASSERT_EQ(parameters.size(), expected.size());
+  ASSERT_EQ(points.size(), expected.size());
+  for (size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_NEAR(parameters[i], expected[i], 1e-12) << i;
+    EXPECT_EQ(points[i], curve.pointAt(parameters[i])) << i;  // the same arithmetic
+  }
+  EXPECT_THROW(curve.sampleSpans(0, parameters), std::invalid_argument);
 }
 
 TEST(BSplineCurveTest, SingleSpanClampedCubicIsTheBezierCurve) {
