@@ -24,12 +24,6 @@ namespace {
 
 using namespace vicc_glyphs;
 
-double maxAbsoluteError(const std::vector<float>& a, const std::vector<float>& b) {
-  double worst = 0.0;
-  for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(double(a[i]) - b[i]));
-  return worst;
-}
-
 void printHistory(const std::string& path, int size, int iterations) {
   const DiffusionCurveImage image = loadDiffusionCurves(path, size);
   const MultigridOptions defaults;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "banded_cholesky.hpp"
+#include "direct_reference_solve.hpp"
 #include "multigrid_levels.hpp"
 
 namespace vicc_glyphs::multigrid_detail {
@@ -18,26 +19,11 @@ namespace {
 
 using Sparse = Eigen::SparseMatrix<double>;
 
-GridProblem openProblem(int width, int height) {
-  GridProblem problem;
-  problem.width = width;
-  problem.height = height;
-  problem.channels = 1;
-  const size_t n = static_cast<size_t>(width) * height;
-  problem.couples_right.assign(n, 1);
-  problem.couples_down.assign(n, 1);
-  problem.fixed.assign(n, 0);
-  problem.values.assign(n, 0.0f);
-  for (int y = 0; y < height; ++y) problem.couples_right[y * width + width - 1] = 0;
-  for (int x = 0; x < width; ++x) problem.couples_down[(height - 1) * width + x] = 0;
-  return problem;
-}
-
 // Random cut links and Dirichlet pixels in the columns left of `irregular_width`, none right of
 // it: coarsen() works out the left part point by point and takes its regular stencil on the
 // right, and both must equal the dense product.
 GridProblem randomProblem(int width, int height, int irregular_width, unsigned seed) {
-  GridProblem problem = openProblem(width, height);
+  GridProblem problem = openGridProblem(width, height, 1);
   std::mt19937 random(seed);
   std::bernoulli_distribution cut(0.25), pin(0.12);
   for (int y = 0; y < height; ++y) {
@@ -150,7 +136,7 @@ TEST(GalerkinCoarseningTest, CoarseOperatorsAreTheDenseProductsRAP) {
 TEST(GalerkinCoarseningTest, ProlongationDoesNotCrossCutLinksAndKeepsConstants) {
   // Barriers between fine columns 6 | 7 (x-edge 7 of coarse 3 | 4) and 13 | 14 (after the
   // coarse point at 12, before the x-edge 13); Dirichlet pixels in columns 0 and 19.
-  GridProblem problem = openProblem(20, 12);
+  GridProblem problem = openGridProblem(20, 12, 1);
   for (int y = 0; y < problem.height; ++y) {
     problem.couples_right[y * 20 + 6] = 0;
     problem.couples_right[y * 20 + 13] = 0;

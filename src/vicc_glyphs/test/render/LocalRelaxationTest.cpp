@@ -22,15 +22,7 @@ using multigrid_detail::LocalRelaxationSet;
 
 // 10 x 8 free pixels, fully linked, one Dirichlet pixel at (5, 4).
 FineLevel smallLevel() {
-  GridProblem problem;
-  problem.width = 10;
-  problem.height = 8;
-  problem.channels = 1;
-  const size_t n = static_cast<size_t>(problem.width) * problem.height;
-  problem.couples_right.assign(n, 1);
-  problem.couples_down.assign(n, 1);
-  problem.fixed.assign(n, 0);
-  problem.values.assign(n, 0.0f);
+  GridProblem problem = openGridProblem(10, 8, 1);
   problem.fixed[4 * problem.width + 5] = 1;
   FineLevel fine;
   multigrid_detail::makeFineLevel(problem, fine);
@@ -120,12 +112,6 @@ Solve solve(const GridProblem& problem, int local_relaxation) {
   return result;
 }
 
-double maxError(const std::vector<float>& a, const std::vector<float>& b) {
-  double worst = 0.0;
-  for (size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(double(a[i]) - b[i]));
-  return worst;
-}
-
 TEST(LocalRelaxationTest, SharpTipsNeedFewerIterationsToTheSameAccuracy) {
   const DiffusionCurveImage image = zigzagImage(256, 24);
   ASSERT_EQ(image.curves[0].segmentCount(), 48);
@@ -135,8 +121,8 @@ TEST(LocalRelaxationTest, SharpTipsNeedFewerIterationsToTheSameAccuracy) {
   ASSERT_TRUE(without.report.converged);
   ASSERT_TRUE(with.report.converged);
   EXPECT_LT(with.report.fine_cycles, without.report.fine_cycles);
-  EXPECT_LT(maxError(with.values, direct), MultigridOptions::kDefaultTolerance);
-  EXPECT_LT(maxError(without.values, direct), MultigridOptions::kDefaultTolerance);
+  EXPECT_LT(maxAbsoluteError(with.values, direct), MultigridOptions::kDefaultTolerance);
+  EXPECT_LT(maxAbsoluteError(without.values, direct), MultigridOptions::kDefaultTolerance);
 }
 
 TEST(LocalRelaxationTest, ASmoothStartIsLeftAlone) {

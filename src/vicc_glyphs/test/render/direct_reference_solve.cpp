@@ -2,6 +2,7 @@
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -65,6 +66,30 @@ double meanAbsoluteError(const std::vector<float>& a, const std::vector<float>& 
   double sum = 0.0;
   for (size_t i = 0; i < a.size(); ++i) sum += std::abs(static_cast<double>(a[i]) - b[i]);
   return sum / static_cast<double>(a.size());
+}
+
+double maxAbsoluteError(const std::vector<float>& a, const std::vector<float>& b) {
+  if (a.size() != b.size()) throw std::invalid_argument("maxAbsoluteError: size mismatch");
+  double worst = 0.0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    worst = std::max(worst, std::abs(static_cast<double>(a[i]) - b[i]));
+  }
+  return worst;
+}
+
+GridProblem openGridProblem(int width, int height, int channels) {
+  GridProblem problem;
+  problem.width = width;
+  problem.height = height;
+  problem.channels = channels;
+  const size_t n = static_cast<size_t>(width) * height;
+  problem.couples_right.assign(n, 1);
+  problem.couples_down.assign(n, 1);
+  problem.fixed.assign(n, 0);
+  problem.values.assign(n * channels, 0.0f);
+  for (int y = 0; y < height; ++y) problem.couples_right[y * width + width - 1] = 0;
+  for (int x = 0; x < width; ++x) problem.couples_down[(height - 1) * width + x] = 0;
+  return problem;
 }
 
 }  // namespace vicc_glyphs

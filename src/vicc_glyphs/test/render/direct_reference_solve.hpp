@@ -15,5 +15,11 @@ std::vector<float> solveDirect(const GridProblem& problem);
 
 /// Mean absolute difference of two equally sized value arrays.
 double meanAbsoluteError(const std::vector<float>& a, const std::vector<float>& b);
+/// Largest absolute difference of two equally sized value arrays.
+double maxAbsoluteError(const std::vector<float>& a, const std::vector<float>& b);
+
+/// A width x height problem with every link inside the grid kept (Neumann borders), no
+/// Dirichlet pixel and all values 0: the tests cut links and fix pixels in it.
+GridProblem openGridProblem(int width, int height, int channels);
 
 }  // namespace vicc_glyphs
