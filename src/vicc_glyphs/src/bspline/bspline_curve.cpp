@@ -53,6 +53,9 @@ Vector unitBasis(const std::vector<double>& t, int p, int span, Vector* unit, do
   return evaluateOnSpan<kDegree>(t, p, span, unit, u, order);
 }
 
+// Degrees up to this are evaluated on fixed-size stack arrays (no heap allocation).
+constexpr int kStackDegree = 7;
+
 }  // namespace
 
 BSplineCurve::BSplineCurve(int degree, std::vector<double> knots,
@@ -170,7 +173,6 @@ Point2 BSplineCurve::evaluateOn(double v, int span, int order) const {
     return evaluateOnSpan<3, 0>(knots_, 3, span, local.data(), v, 0);
   }
   // Curves are evaluated millions of times per glyph: no heap allocation for usual degrees.
-  constexpr int kStackDegree = 7;
   if (degree_ <= kStackDegree) {
     std::array<Point2, kStackDegree + 1> local;
     std::copy(first, first + degree_ + 1, local.begin());
@@ -187,7 +189,6 @@ BasisRow BSplineCurve::basisAt(double u, int order) const {
   BasisRow row;
   row.first_index = span - degree_;
   // Fitting matrices take a row per sample: no heap allocation for usual degrees.
-  constexpr int kStackDegree = 7;
   if (degree_ == 3) {  // the common case: unrolled
     std::array<Eigen::Vector4d, 4> unit;
     unit.fill(Eigen::Vector4d::Zero());

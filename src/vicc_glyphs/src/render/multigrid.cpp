@@ -366,8 +366,8 @@ class Multigrid {
     Px* __restrict r = r_.data();
     const std::vector<int>& pixels = local_.pixels();
     for (int sweep = 0; sweep < options_.local_relaxation; ++sweep) {
-      for (const int p : pixels) relaxSolutionAt(u, p);
-      for (auto it = pixels.rbegin(); it != pixels.rend(); ++it) relaxSolutionAt(u, *it);
+      for (const int p : pixels) relaxAt<false>(u, nullptr, p);
+      for (auto it = pixels.rbegin(); it != pixels.rend(); ++it) relaxAt<false>(u, nullptr, *it);
     }
     for (const int p : local_.affected()) {
       squares -= r[p] * r[p];
@@ -375,14 +375,6 @@ class Multigrid {
       squares += r[p] * r[p];
     }
     return squares;
-  }
-
-  // Gauss-Seidel at free pixel p of the finest level for the solution (Dirichlet values in u).
-  void relaxSolutionAt(Px* __restrict u, int p) const {
-    const int s = fine_.stride;
-    const LinkWeights& w = kWeights[fine_.mask[p] & kAllLinks];
-    u[p] = (w.left * u[p - 1] + w.right * u[p + 1] + w.up * u[p - s] + w.down * u[p + s]) *
-           w.inv_degree;
   }
 
   // Whether a channel of `value` exceeds `threshold` in magnitude.
@@ -754,12 +746,20 @@ class Multigrid {
         if constexpr (kHasRhs) sum += f[p];
         u[p] = sum * 0.25f;
       } else if (!(m & kFixed)) {
-        const LinkWeights& w = kWeights[m];
-        Px sum = w.left * u[p - 1] + w.right * u[p + 1] + w.up * u[p - s] + w.down * u[p + s];
-        if constexpr (kHasRhs) sum += f[p];
-        u[p] = sum * w.inv_degree;
+        relaxAt<kHasRhs>(u, f, p);
       }
     }
+  }
+
+  // Gauss-Seidel at free pixel p of the finest level, any links.
+  template <bool kHasRhs>
+  __attribute__((always_inline)) void relaxAt(Px* __restrict u, const Px* __restrict f,
+                                              int p) const {
+    const int s = fine_.stride;
+    const LinkWeights& w = kWeights[fine_.mask[p] & kAllLinks];
+    Px sum = w.left * u[p - 1] + w.right * u[p + 1] + w.up * u[p - s] + w.down * u[p + s];
+    if constexpr (kHasRhs) sum += f[p];
+    u[p] = sum * w.inv_degree;
   }
 
   // The first half-sweep from u = 0: u_p = f_p / sum w.
