@@ -779,15 +779,11 @@ class Multigrid {
     const std::uint8_t* __restrict regular = level.regular.data();
     const float* __restrict inverse = level.inverse_centre.data();
     const Stencil& stencil = level.regular_stencil;
-    // The regular stencil is symmetric: one coupling for the four edge neighbours, one for the
-    // four corners.
     const float edge = stencil[kE], corner = stencil[kSE], inverse_regular = 1.0f / stencil[kC];
     const int s = level.stride;
     const auto relax = [&](int p) {
       if (regular[p]) {
-        const Px edges = (u[p - 1] + u[p + 1]) + (u[p - s] + u[p + s]);
-        const Px corners = (u[p - s - 1] + u[p - s + 1]) + (u[p + s - 1] + u[p + s + 1]);
-        u[p] = (f[p] - edge * edges - corner * corners) * inverse_regular;
+        u[p] = (f[p] - regularOffDiagonal(u, p, s, edge, corner)) * inverse_regular;
       } else {
         u[p] = (f[p] - offDiagonal(level, u, p)) * inverse[p];
       }
@@ -814,6 +810,16 @@ class Multigrid {
         }
       }
     }
+  }
+
+  // The off-diagonal part of a regular coarse row times u (the couplings as arguments, so that
+  // a loop can keep them in registers). The regular stencil is symmetric: one coupling for the
+  // four edge neighbours, one for the four corners.
+  __attribute__((always_inline)) static Px regularOffDiagonal(const Px* __restrict u, int p, int s,
+                                                              float edge, float corner) {
+    const Px edges = (u[p - 1] + u[p + 1]) + (u[p - s] + u[p + s]);
+    const Px corners = (u[p - s - 1] + u[p - s + 1]) + (u[p + s - 1] + u[p + s + 1]);
+    return edge * edges + corner * corners;
   }
 
   // The off-diagonal part of a coarse row times u.
@@ -868,10 +874,16 @@ class Multigrid {
            (w.left * v[p - 1] + w.right * v[p + 1] + w.up * v[p - s] + w.down * v[p + s]);
   }
 
+  // On a coarse level, with the smoother's fast path for the regular stencil.
   __attribute__((always_inline)) static Px residualAt(const CoarseLevel& level,
                                                       const Px* __restrict u,
                                                       const Px* __restrict f, size_t p) {
     const int q = static_cast<int>(p);
+    if (level.regular[q]) {
+      const Stencil& stencil = level.regular_stencil;
+      return f[q] - stencil[kC] * u[q] -
+             regularOffDiagonal(u, q, level.stride, stencil[kE], stencil[kSE]);
+    }
     return f[q] - level.centre[q] * u[q] - offDiagonal(level, u, q);
   }
 
@@ -883,9 +895,12 @@ class Multigrid {
       restrictFrom(
           fine, l, [&](size_t p) { return residualAt(fine, u, f, p); }, fc);
     } else {
+      // Inlined: as a call per pixel it cost as much again as the 9-point residual itself.
       const CoarseLevel& fine = coarse_[l - 1];
       restrictFrom(
-          fine, l, [&](size_t p) { return residualAt(fine, u, f, p); }, fc);
+          fine, l,
+          [&](size_t p) __attribute__((always_inline)) { return residualAt(fine, u, f, p); },
+          fc);
     }
   }
 
