@@ -897,10 +897,10 @@ class Multigrid {
     } else {
       // Inlined: as a call per pixel it cost as much again as the 9-point residual itself.
       const CoarseLevel& fine = coarse_[l - 1];
-      restrictFrom(
-          fine, l,
-          [&](size_t p) __attribute__((always_inline)) { return residualAt(fine, u, f, p); },
-          fc);
+      const auto residual = [&](size_t p) __attribute__((always_inline)) {
+        return residualAt(fine, u, f, p);
+      };
+      restrictFrom(fine, l, residual, fc);
     }
   }
 
