@@ -115,10 +115,13 @@ void assembleGridProblem(const DiffusionCurveImage& image, double scale, const S
   const int n = problem.pixelCount();
   const int width = problem.width, height = problem.height, channels = problem.channels;
   if (n == 0) return;
-  // A pixel takes its value from the nearest curve crossing on its links (equally near ones
-  // are averaged: sums accumulate in `values`, divided by the counts afterwards). Averaging
-  // all crossings instead would mix both sides' colours where a thin wedge of one side ends
-  // between two pixel centres of the other (every sharp corner of an icon).
+  // A pixel takes its value from the nearest curve crossing on its links, measured along the
+  // link (equally near ones are averaged: sums accumulate in `values`, divided by the counts
+  // afterwards). Averaging all crossings instead would mix both sides' colours where a thin
+  // wedge of one side ends between two pixel centres of the other (every sharp corner of an
+  // icon). Along the link, not from the crossing piece's line: where a sharp tip crosses a
+  // link twice, the far flank's line can pass closer to the pixel centre than the near one's,
+  // and the pixel took the tip's colour (dark smudges beside the wave tips of PACEMOD glyphs).
   constexpr float kSameDistance = 1e-4f;
   counts.assign(n, 0);
   nearest.assign(n, std::numeric_limits<float>::infinity());
@@ -143,8 +146,8 @@ void assembleGridProblem(const DiffusionCurveImage& image, double scale, const S
   forEachLatticeCrossing(image, scale, width, height, [&](const LatticeCrossing& crossing) {
     const DiffusionCurve& curve = image.curves[crossing.curve];
     cutLink(problem, crossing.left_pixel, crossing.right_pixel);
-    constrain(curve, true, crossing.position, crossing.left_pixel, crossing.left_distance);
-    constrain(curve, false, crossing.position, crossing.right_pixel, crossing.right_distance);
+    constrain(curve, true, crossing.position, crossing.left_pixel, crossing.left_link_distance);
+    constrain(curve, false, crossing.position, crossing.right_pixel, crossing.right_link_distance);
   });
   for (int p = 0; p < n; ++p) {
     if (counts[p] == 0) continue;

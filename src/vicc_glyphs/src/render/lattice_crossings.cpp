@@ -79,6 +79,9 @@ class CrossingCollector {
     crossing.right_pixel = first_is_left ? second : first;
     crossing.left_distance = std::abs(first_is_left ? first_side : second_side);
     crossing.right_distance = std::abs(first_is_left ? second_side : first_side);
+    const double first_link = (Point2(first.x + 0.5, first.y + 0.5) - at).norm();
+    crossing.left_link_distance = first_is_left ? first_link : 1.0 - first_link;
+    crossing.right_link_distance = 1.0 - crossing.left_link_distance;
     visit_(crossing);
   }
 

@@ -1,5 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
 #include "sample_images.hpp"
 #include "vicc_glyphs/render/grid_problem.hpp"
 
@@ -69,6 +75,75 @@ TEST(GridProblemTest, ThinWedgeTipTakesTheNearestSideNotAMix) {
     EXPECT_TRUE(green == 0.0f || green == 1.0f) << "pixel " << p % 40 << "," << p / 40;
   }
   EXPECT_GT(fixed, 40);
+}
+
+// Whether `point` lies inside the polygon through every third control point of `curve` (its
+// segments are straight), by the crossing rule.
+bool insidePolygonOf(const DiffusionCurve& curve, const Point2& point) {
+  bool inside = false;
+  const std::vector<Point2>& points = curve.control_points;
+  for (size_t k = 3; k < points.size(); k += 3) {
+    const Point2 &a = points[k - 3], &b = points[k];
+    if ((a.y() > point.y()) != (b.y() > point.y()) &&
+        point.x() < a.x() + (point.y() - a.y()) / (b.y() - a.y()) * (b.x() - a.x())) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
+// The distance of `point` to that polygon.
+double distanceToPolygonOf(const DiffusionCurve& curve, const Point2& point) {
+  double nearest = std::numeric_limits<double>::infinity();
+  const std::vector<Point2>& points = curve.control_points;
+  for (size_t k = 3; k < points.size(); k += 3) {
+    const Point2 &a = points[k - 3], d = points[k] - points[k - 3];
+    const double t = std::clamp((point - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    nearest = std::min(nearest, (a + t * d - point).norm());
+  }
+  return nearest;
+}
+
+// Whether a corner of that polygon touches one of the links of the pixel centred at `centre`
+// (within `tolerance`): a tip that reaches a link just barely crosses it twice at one point, and
+// the pixel averages the two sides (a tie, see grid_problem.cpp), a known limit.
+bool cornerTouchesLinksOf(const DiffusionCurve& curve, const Point2& centre, double tolerance) {
+  const std::vector<Point2>& points = curve.control_points;
+  for (size_t k = 0; k < points.size(); k += 3) {
+    const Point2 offset = points[k] - centre;
+    const bool on_row = std::abs(offset.y()) < tolerance && std::abs(offset.x()) <= 1.0;
+    const bool on_column = std::abs(offset.x()) < tolerance && std::abs(offset.y()) <= 1.0;
+    if (on_row || on_column) return true;
+  }
+  return false;
+}
+
+TEST(GridProblemTest, EveryFixedPixelTakesTheSideItsCentreLiesOn) {
+  // Sharp tips cross some links twice (once by each flank). The far flank's line can pass
+  // closer to a pixel centre than the near one's, so the side is the one of the crossing met
+  // first along the link; by the perpendicular distance, pixels outside a tip took the tip's
+  // colour (a dark smudge in the light region of a waved glyph).
+  for (const auto& [size, teeth] : {std::pair{256, 24}, {256, 64}, {512, 96}}) {
+    const DiffusionCurveImage image = zigzagImage(size, teeth, 0.2, 0.45);
+    const GridProblem problem = assembleColorProblem(image, size, size, 1.0, Color::Zero());
+    int fixed = 0, wrong = 0, touched = 0;
+    for (int p = 0; p < problem.pixelCount(); ++p) {
+      if (!problem.fixed[p]) continue;
+      ++fixed;
+      const Point2 centre(p % size + 0.5, p / size + 0.5);
+      // A centre on the curve (curve samples snap to 1/1024 pixel) may take either side.
+      if (distanceToPolygonOf(image.curves[0], centre) < 1e-2) continue;
+      if (cornerTouchesLinksOf(image.curves[0], centre, 1e-3)) {
+        ++touched;
+        continue;
+      }
+      const float expected_green = insidePolygonOf(image.curves[0], centre) ? 0.6f : 0.1f;
+      wrong += std::abs(problem.value(1, p) - expected_green) > 1e-6f;
+    }
+    EXPECT_GT(fixed, 4 * teeth) << size << " px, " << teeth << " teeth";
+    EXPECT_EQ(wrong, 0) << size << " px, " << teeth << " teeth";
+    EXPECT_LE(touched, 16) << size << " px, " << teeth << " teeth";
+  }
 }
 
 TEST(GridProblemTest, BlurProblemCarriesScaledSigmaOnBothSides) {

@@ -26,6 +26,8 @@ TEST(LatticeCrossingsTest, RightwardLineHasItsLeftSideAbove) {
     EXPECT_EQ(c.left_pixel.x, c.right_pixel.x);
     EXPECT_NEAR(c.left_distance, 0.7, 1e-3);  // sample points snap to 1/1024 pixel
     EXPECT_NEAR(c.right_distance, 0.3, 1e-3);
+    EXPECT_NEAR(c.left_link_distance, 0.7, 1e-3);  // across a vertical link: the same
+    EXPECT_NEAR(c.right_link_distance, 0.3, 1e-3);
     EXPECT_NEAR(c.footprint, 0.5, 1e-12);
     EXPECT_NEAR(c.position, (c.left_pixel.x + 0.5) / 20.0, 1e-6);
   }

@@ -1,6 +1,8 @@
 #include "sample_images.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace vicc_glyphs {
 
@@ -90,6 +92,28 @@ DiffusionCurveImage iconLikeImage(int width, int height) {
   image.curves.push_back(barrier);
   image.curves.push_back(
       lineCurve({0.75 * w, 0.05 * h}, {0.95 * w, 0.2 * h}, Color(0, 0.5, 0.5), Color(1, 1, 1)));
+  return image;
+}
+
+DiffusionCurveImage zigzagImage(int size, int teeth, double inner, double outer) {
+  DiffusionCurveImage image{size, size, {}};
+  const Point2 centre(size / 2.0, size / 2.0);
+  std::vector<Point2> corners;
+  for (int k = 0; k < 2 * teeth; ++k) {
+    const double angle = M_PI * k / teeth, radius = size * (k % 2 ? outer : inner);
+    corners.push_back(centre + radius * Point2(std::cos(angle), std::sin(angle)));
+  }
+  // Angles grow clockwise on screen (y down): the inside is the right side.
+  DiffusionCurve curve;
+  curve.control_points = {corners[0]};
+  for (size_t k = 1; k <= corners.size(); ++k) {
+    const Point2 from = corners[k - 1], to = corners[k % corners.size()];
+    curve.control_points.insert(curve.control_points.end(),
+                                {from + (to - from) / 3.0, from + 2.0 * (to - from) / 3.0, to});
+  }
+  curve.left_colors = {{0.0, Color(0.05, 0.1, 0.4)}};
+  curve.right_colors = {{0.0, Color(1.0, 0.6, 0.1)}};
+  image.curves.push_back(curve);
   return image;
 }
 

@@ -23,5 +23,9 @@ DiffusionCurveImage gradientCircleImage(int width, int height);
 DiffusionCurveImage barrierImage(int width, int height);
 /// Several curves with colour gradients along them, a partial barrier and nested circles.
 DiffusionCurveImage iconLikeImage(int width, int height);
+/// A closed zigzag of straight segments round the centre of a size x size image: a star of
+/// `teeth` sharp tips, alternately at `inner` and `outer` times the size from the centre;
+/// clockwise on screen, orange inside (its right side), dark blue outside.
+DiffusionCurveImage zigzagImage(int size, int teeth, double inner, double outer);
 
 }  // namespace vicc_glyphs

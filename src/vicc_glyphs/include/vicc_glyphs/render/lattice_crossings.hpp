@@ -24,6 +24,11 @@ struct LatticeCrossing {
   GridPixel right_pixel;        ///< the neighbour on the curve's right side
   double left_distance = 0.0;   ///< distance of the left pixel centre to the curve (grid pixels)
   double right_distance = 0.0;  ///< same for the right pixel centre
+  /// Distances of the two pixel centres to the crossing point along their link (grid pixels;
+  /// the two add up to 1): which crossing of a link a pixel meets first where a curve crosses
+  /// the link more than once (the sharp tip of a wave or of an icon's corner).
+  double left_link_distance = 0.0;
+  double right_link_distance = 0.0;
   /// Half-extent of a pixel square measured along the curve normal (0.5 .. 0.707): how far
   /// from the curve a pixel centre must be for its square not to touch the curve.
   double footprint = 0.5;
