@@ -33,3 +33,12 @@ covid steady_high incidence=1500,hospitalisation=6,incidence_change=0,hospitalis
 "$tool" design-map "$designs/covid19_gradient.yaml" \
   --table "$designs/data/covid19_german_states_illustrative.csv" \
   --out "$here/covid19_gradient_map_german_states_illustrative.png" --glyph-size 96 --width 760
+# The README's overview: seven of the figures above side by side (needs ImageMagick).
+if command -v convert >/dev/null 2>&1; then
+  (cd "$here" && convert rain_forecast_sine_probability40.png rain_forecast_sine_amount5.png \
+    rain_forecast_dashes_probability85.png covid19_gradient_falling.png \
+    covid19_gradient_steady_low.png intracranial_pressure_10.png intracranial_pressure_45.png \
+    -bordercolor white -border 4 +append overview.png)
+else
+  echo "make_figures.sh: no ImageMagick 'convert': overview.png not updated" >&2
+fi
