@@ -55,16 +55,9 @@ TEST(GridProblemTest, PixelsNoDirichletPixelReachesTakeTheBackground) {
 TEST(GridProblemTest, ThinWedgeTipTakesTheNearestSideNotAMix) {
   // A closed, thin wedge (white inside, red outside) whose tip is narrower than a pixel over
   // several columns: links there are crossed twice, once by each flank.
-  const Point2 corners[] = {{5, 8}, {30.2, 10.25}, {5, 12.5}, {5, 8}};
-  DiffusionCurve wedge;
-  for (int k = 0; k < 3; ++k) {
-    const Point2 a = corners[k], b = corners[k + 1];
-    if (k == 0) wedge.control_points.push_back(a);
-    wedge.control_points.insert(wedge.control_points.end(),
-                                {a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b});
-  }
-  wedge.left_colors = {{0.0, Color(1, 0, 0)}};  // clockwise on screen: left is outside
-  wedge.right_colors = {{0.0, Color(1, 1, 1)}};
+  // Clockwise on screen: left is outside.
+  const DiffusionCurve wedge =
+      polygonCurve({{5, 8}, {30.2, 10.25}, {5, 12.5}}, Color(1, 0, 0), Color(1, 1, 1));
   DiffusionCurveImage image{40, 20, {wedge}};
   const GridProblem problem = assembleColorProblem(image, 40, 20, 1.0, Color::Zero());
   int fixed = 0;

@@ -15,6 +15,20 @@ DiffusionCurve lineCurve(const Point2& from, const Point2& to, const Color& left
   return curve;
 }
 
+DiffusionCurve polygonCurve(const std::vector<Point2>& corners, const Color& left,
+                            const Color& right) {
+  DiffusionCurve curve;
+  curve.control_points = {corners.front()};
+  for (size_t k = 1; k <= corners.size(); ++k) {
+    const Point2 from = corners[k - 1], to = corners[k % corners.size()];
+    curve.control_points.insert(curve.control_points.end(),
+                                {from + (to - from) / 3.0, from + 2.0 * (to - from) / 3.0, to});
+  }
+  curve.left_colors = {{0.0, left}};
+  curve.right_colors = {{0.0, right}};
+  return curve;
+}
+
 DiffusionCurve circleCurve(const Point2& centre, double radius, const Color& inside,
                            const Color& outside) {
   constexpr double kappa = 0.5522847498;  // cubic approximation of a quarter circle
@@ -104,16 +118,7 @@ DiffusionCurveImage zigzagImage(int size, int teeth, double inner, double outer)
     corners.push_back(centre + radius * Point2(std::cos(angle), std::sin(angle)));
   }
   // Angles grow clockwise on screen (y down): the inside is the right side.
-  DiffusionCurve curve;
-  curve.control_points = {corners[0]};
-  for (size_t k = 1; k <= corners.size(); ++k) {
-    const Point2 from = corners[k - 1], to = corners[k % corners.size()];
-    curve.control_points.insert(curve.control_points.end(),
-                                {from + (to - from) / 3.0, from + 2.0 * (to - from) / 3.0, to});
-  }
-  curve.left_colors = {{0.0, Color(0.05, 0.1, 0.4)}};
-  curve.right_colors = {{0.0, Color(1.0, 0.6, 0.1)}};
-  image.curves.push_back(curve);
+  image.curves.push_back(polygonCurve(corners, Color(0.05, 0.1, 0.4), Color(1.0, 0.6, 0.1)));
   return image;
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // Small DCIs with known answers for the renderer tests and the bench.
 
+#include <vector>
+
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
 
 namespace vicc_glyphs {
@@ -8,6 +10,9 @@ namespace vicc_glyphs {
 /// A straight one-segment curve from `from` to `to` with constant side colours.
 DiffusionCurve lineCurve(const Point2& from, const Point2& to, const Color& left,
                          const Color& right);
+/// A closed polygon through `corners` (straight cubic segments, back to the first corner).
+DiffusionCurve polygonCurve(const std::vector<Point2>& corners, const Color& left,
+                            const Color& right);
 /// A closed circle of four Beziers, clockwise on screen, so its inside is its right side.
 DiffusionCurve circleCurve(const Point2& centre, double radius, const Color& inside,
                            const Color& outside);
