@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -206,6 +207,27 @@ BasisRow BSplineCurve::basisAt(double u, int order) const {
   return row;
 }
 
+std::vector<CubicBasisRow> BSplineCurve::cubicBasisAt(const std::vector<double>& parameters) const {
+  if (degree_ != 3) fail("cubicBasisAt needs a cubic, got degree " + std::to_string(degree_));
+  std::vector<CubicBasisRow> rows(parameters.size());
+  int span = -1;  // the first span is searched, the others walked to
+  double previous = -std::numeric_limits<double>::infinity();
+  std::array<Eigen::Vector4d, 4> unit;
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const double v = clampToDomain(parameters[i]);
+    if (parameters[i] < previous) fail("cubicBasisAt needs parameters that do not decrease");
+    previous = parameters[i];
+    if (span < 0 || v >= domainEnd()) {
+      span = findSpan(v);  // also findSpan's special case: the end belongs to the last span
+    } else {
+      while (knots_[span + 1] <= v) ++span;  // findSpan: the last knot <= v
+    }
+    unit.fill(Eigen::Vector4d::Zero());
+    rows[i] = {span - 3, unitBasis<3>(knots_, 3, span, unit.data(), v, 0)};
+  }
+  return rows;
+}
+
 std::vector<Point2> BSplineCurve::sample(int count) const {
   if (count < 2) fail("sampling needs at least 2 points");
   std::vector<Point2> points(count);
@@ -236,6 +258,25 @@ std::vector<Point2> BSplineCurve::sampleSpans(int per_span, std::vector<double>&
   }
   parameters.push_back(breaks.back());
   points.push_back(pointAt(breaks.back()));
+  return points;
+}
+
+std::vector<Point2> BSplineCurve::pointsAt(const std::vector<double>& parameters) const {
+  std::vector<Point2> points;
+  points.reserve(parameters.size());
+  int span = -1;  // the first span is searched, the others walked to
+  double previous = -std::numeric_limits<double>::infinity();
+  for (const double u : parameters) {
+    const double v = clampToDomain(u);
+    if (u < previous) fail("pointsAt needs parameters that do not decrease");
+    previous = u;
+    if (span < 0 || v >= domainEnd()) {
+      span = findSpan(v);  // also findSpan's special case: the end belongs to the last span
+    } else {
+      while (knots_[span + 1] <= v) ++span;  // findSpan: the last knot <= v
+    }
+    points.push_back(evaluateOn(v, span, 0));
+  }
   return points;
 }
 

@@ -3,6 +3,7 @@
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseQR>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -62,6 +63,47 @@ std::vector<double> chordLengthParameters(const std::vector<Point2>& points, dou
   }
   parameters.back() = end;
   return parameters;
+}
+
+CubicLeastSquares::CubicLeastSquares(const BSplineCurve& basis,
+                                     const std::vector<double>& parameters)
+    : control_count_(basis.controlPointCount()) {
+  checkParameters(basis, parameters);
+  rows_ = basis.cubicBasisAt(parameters);
+  // Lower band of N^T N: band[c][k] is entry (c + k, c).
+  std::vector<std::array<double, 4>> band(control_count_, std::array<double, 4>{});
+  for (const CubicBasisRow& row : rows_) {
+    for (int a = 0; a < 4; ++a) {
+      for (int b = a; b < 4; ++b) band[row.first_index + a][b - a] += row.values[a] * row.values[b];
+    }
+  }
+  Eigen::SparseMatrix<double> normal(control_count_, control_count_);
+  normal.reserve(Eigen::VectorXi::Constant(control_count_, 4));
+  for (int c = 0; c < control_count_; ++c) {
+    for (int k = 0; k < 4 && c + k < control_count_; ++k) normal.insert(c + k, c) = band[c][k];
+  }
+  normal.makeCompressed();
+  factor_.compute(normal);
+  if (factor_.info() != Eigen::Success) {
+    throw std::invalid_argument("CubicLeastSquares: the " + std::to_string(parameters.size()) +
+                                " parameters do not determine all " +
+                                std::to_string(control_count_) +
+                                " de Boor points; every basis function needs data in its support");
+  }
+}
+
+Eigen::MatrixX2d CubicLeastSquares::solve(const Eigen::MatrixX2d& targets) const {
+  if (targets.rows() != parameterCount()) {
+    throw std::invalid_argument("CubicLeastSquares: " + std::to_string(targets.rows()) +
+                                " targets for " + std::to_string(parameterCount()) + " parameters");
+  }
+  Eigen::MatrixX2d right = Eigen::MatrixX2d::Zero(control_count_, 2);  // N^T P
+  for (std::size_t i = 0; i < rows_.size(); ++i) {
+    for (int a = 0; a < 4; ++a) {
+      right.row(rows_[i].first_index + a) += rows_[i].values[a] * targets.row(static_cast<int>(i));
+    }
+  }
+  return factor_.solve(right);
 }
 
 BSplineCurve leastSquaresFit(int degree, std::vector<double> knots,

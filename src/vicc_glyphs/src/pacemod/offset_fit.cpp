@@ -48,8 +48,10 @@ OffsetFit::OffsetFit(const bspline::BSplineCurve& original, const bspline::ArcLe
   }
   lengths.push_back(knots_.back());
   const double end = knots_.back();
-  for (double l : lengths) {
-    Sample sample{l, original.pointAt(table.parameterAt(l)), frame_.normal(l), -1, 0, 0.0};
+  const std::vector<ContourSample> on_contour = frame_.samples(lengths);
+  for (std::size_t i = 0; i < lengths.size(); ++i) {
+    const double l = lengths[i];
+    Sample sample{l, on_contour[i].point, on_contour[i].normal, -1, 0, 0.0};
     double nearest = 0.0;
     for (std::size_t c = 0; c < corners_.size(); ++c) {
       // The closing corner (at 0) is also the one at L.
@@ -82,14 +84,9 @@ OffsetFit::OffsetFit(const bspline::BSplineCurve& original, const bspline::ArcLe
   }
   const bspline::BSplineCurve basis(3, knots_,
                                     std::vector<Point2>(knots_.size() - 4, Point2::Zero()));
-  const Eigen::SparseMatrix<double> n = bspline::collocationMatrix(basis, lengths);
-  transposed_ = n.transpose();
-  // Normal equations with the banded N^T N (sparse Cholesky): the least-squares minimiser
-  // that ELSPIA converges to (omega = 0), solved directly; far faster than sparse QR here.
-  solver_ = std::make_shared<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>>>(transposed_ * n);
-  if (solver_->info() != Eigen::Success) {
-    throw std::invalid_argument("OffsetFit: the knot spans are not all covered by samples");
-  }
+  // Normal equations with the banded N^T N (Cholesky): the least-squares minimiser that ELSPIA
+  // converges to (omega = 0), solved directly; far faster than sparse QR here.
+  solver_ = std::make_shared<const bspline::CubicLeastSquares>(basis, lengths);
 }
 
 Point2 OffsetFit::sideOffset(int c, int side, double distance, const Offset& offset) const {
@@ -199,7 +196,7 @@ bspline::BSplineCurve OffsetFit::fit(const Offset& offset,
     }
     targets.row(static_cast<int>(i)) = q.transpose();
   }
-  const Eigen::MatrixX2d control = solver_->solve(transposed_ * targets);
+  const Eigen::MatrixX2d control = solver_->solve(targets);
   std::vector<Point2> points(control.rows());
   for (int i = 0; i < control.rows(); ++i) points[i] = control.row(i).transpose();
   return bspline::BSplineCurve(3, knots_, std::move(points));

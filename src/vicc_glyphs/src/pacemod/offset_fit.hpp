@@ -15,14 +15,13 @@
 // only on the knots and the sample positions: they are factorised once per contour, so every
 // amplitude (each repair round) costs one back substitution.
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
 #include <functional>
 #include <memory>
 #include <vector>
 
 #include "vicc_glyphs/bspline/arc_length.hpp"
 #include "vicc_glyphs/bspline/bspline_curve.hpp"
+#include "vicc_glyphs/bspline/fitting.hpp"
 #include "vicc_glyphs/pacemod/contour_corners.hpp"
 #include "wave_strips.hpp"
 
@@ -81,8 +80,7 @@ class OffsetFit {
   /// Per corner: half the way to the corner before and to the one after it.
   std::vector<std::pair<double, double>> reach_;
   std::vector<Sample> samples_;
-  Eigen::SparseMatrix<double> transposed_;  ///< N^T, N the collocation matrix
-  std::shared_ptr<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>>> solver_;
+  std::shared_ptr<const bspline::CubicLeastSquares> solver_;
 };
 
 }  // namespace detail

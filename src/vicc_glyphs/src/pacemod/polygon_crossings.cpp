@@ -31,11 +31,12 @@ struct SegmentBox {
 };
 
 // Segments bucketed by the grid cells their bounding boxes touch (a counting sort: cell c
-// holds boxes[order[start[c]] ... boxes[order[start[c + 1] - 1]]).
+// holds bucketed[start[c]] ... bucketed[start[c + 1] - 1], copies of the boxes in increasing
+// lo.x, so that a sweep along x meets only the pairs whose x ranges overlap).
 struct SegmentGrid {
   static constexpr double kMaxCells = 1 << 22;
-  std::vector<SegmentBox> boxes;
-  std::vector<int> start, order;
+  std::vector<SegmentBox> boxes, bucketed;
+  std::vector<int> start;
   Point2 origin = Point2::Zero();
   double cell = 1.0;
   long long nx = 0, ny = 0;
@@ -86,10 +87,15 @@ struct SegmentGrid {
     start.assign(static_cast<std::size_t>(nx * ny) + 1, 0);
     for (const SegmentBox& box : boxes) forEachCell(box, [&](long long c) { ++start[c + 1]; });
     for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
-    order.resize(start.back());
+    bucketed.resize(start.back());
     std::vector<int> fill(start.begin(), start.end() - 1);
-    for (int b = 0; b < static_cast<int>(boxes.size()); ++b) {
-      forEachCell(boxes[b], [&](long long c) { order[fill[c]++] = b; });
+    for (const SegmentBox& box : boxes) {
+      forEachCell(box, [&](long long c) { bucketed[fill[c]++] = box; });
+    }
+    for (std::size_t c = 0; c + 1 < start.size(); ++c) {
+      if (start[c + 1] - start[c] < 2) continue;
+      std::sort(bucketed.begin() + start[c], bucketed.begin() + start[c + 1],
+                [](const SegmentBox& a, const SegmentBox& b) { return a.lo.x() < b.lo.x(); });
     }
   }
 };
@@ -117,14 +123,12 @@ std::vector<Crossing> findCrossings(const std::vector<Polyline>& lines, double c
   std::vector<Crossing> crossings;
   for (long long c = 0; c + 1 < static_cast<long long>(grid.start.size()); ++c) {
     for (int a = grid.start[c]; a < grid.start[c + 1]; ++a) {
-      const SegmentBox& box_a = grid.boxes[grid.order[a]];
-      for (int b = a + 1; b < grid.start[c + 1]; ++b) {
-        const SegmentBox& box_b = grid.boxes[grid.order[b]];
-        // Densely sampled curves put many short segments into a cell: most pairs are apart.
-        if ((box_a.lo.array() > box_b.hi.array()).any() ||
-            (box_b.lo.array() > box_a.hi.array()).any()) {
-          continue;
-        }
+      const SegmentBox& box_a = grid.bucketed[a];
+      // Densely sampled curves put many short segments into a cell: most pairs are apart. The
+      // later boxes start at or right of box_a's left edge; past its right edge none overlaps.
+      for (int b = a + 1; b < grid.start[c + 1] && grid.bucketed[b].lo.x() <= box_a.hi.x(); ++b) {
+        const SegmentBox& box_b = grid.bucketed[b];
+        if (box_a.lo.y() > box_b.hi.y() || box_b.lo.y() > box_a.hi.y()) continue;
         // Canonical order, so that the crossing point is computed the same in every cell.
         SegmentRef p = box_a.segment, q = box_b.segment;
         if (std::tie(q.line, q.segment) < std::tie(p.line, p.segment)) std::swap(p, q);

@@ -19,10 +19,31 @@ Point2 OffsetFrame::normal(double l) const {
   // The chord over a small stretch: sub-pixel steps of an imported polygon (and zero-length
   // handles) do not turn the offset by their own angle.
   const double end = table.totalLength();
-  const Point2 d = original.pointAt(table.parameterAt(std::min(l + kNormalChord, end))) -
-                   original.pointAt(table.parameterAt(std::max(l - kNormalChord, 0.0)));
+  return normalOfChord(original.pointAt(table.parameterAt(std::max(l - kNormalChord, 0.0))),
+                       original.pointAt(table.parameterAt(std::min(l + kNormalChord, end))), l);
+}
+
+Point2 OffsetFrame::normalOfChord(const Point2& before, const Point2& after, double l) const {
+  const Point2 d = after - before;
   if (d.norm() > 1e-9) return outwardNormalOf(d, area);
   return outwardNormalOf(original.derivativeAt(table.parameterAt(l)), area);
+}
+
+std::vector<ContourSample> OffsetFrame::samples(const std::vector<double>& lengths) const {
+  const double end = table.totalLength();
+  std::vector<double> before(lengths.size()), after(lengths.size());
+  for (std::size_t i = 0; i < lengths.size(); ++i) {
+    before[i] = std::max(lengths[i] - kNormalChord, 0.0);
+    after[i] = std::min(lengths[i] + kNormalChord, end);
+  }
+  const std::vector<Point2> points = original.pointsAt(table.parametersAt(lengths));
+  const std::vector<Point2> behind = original.pointsAt(table.parametersAt(before));
+  const std::vector<Point2> ahead = original.pointsAt(table.parametersAt(after));
+  std::vector<ContourSample> result(lengths.size());
+  for (std::size_t i = 0; i < lengths.size(); ++i) {
+    result[i] = {points[i], normalOfChord(behind[i], ahead[i], lengths[i])};
+  }
+  return result;
 }
 
 Point2 OffsetFrame::offsetPoint(double l, double w) const {
@@ -34,11 +55,14 @@ ContourSample OffsetFrame::sample(double l) const {
 }
 
 std::vector<ContourSample> stripSamples(const OffsetFrame& frame, double l0, double l1) {
-  std::vector<ContourSample> samples;
+  std::vector<double> lengths;
   for (int k = 1; k <= kStripSamples; ++k) {
     const double t = static_cast<double>(k) / (kStripSamples + 1);
-    samples.push_back(frame.sample(l0 + t * (l1 - l0)));
+    lengths.push_back(l0 + t * (l1 - l0));
   }
+  if (l1 < l0) std::reverse(lengths.begin(), lengths.end());
+  std::vector<ContourSample> samples = frame.samples(lengths);
+  if (l1 < l0) std::reverse(samples.begin(), samples.end());
   return samples;
 }
 

@@ -35,6 +35,14 @@ struct OffsetFrame {
   Point2 offsetPoint(double l, double w) const;
   /// The original's point and normal(l) at arc length l.
   ContourSample sample(double l) const;
+  /// sample(l) for each of `lengths`, which must not decrease: the arc-length table and the
+  /// knot spans are walked in order instead of searched three times per sample.
+  std::vector<ContourSample> samples(const std::vector<double>& lengths) const;
+
+ private:
+  /// The outward normal of the chord from the original's point `before` to `after` around arc
+  /// length l (the tangent at l where the chord has no length).
+  Point2 normalOfChord(const Point2& before, const Point2& after, double l) const;
 };
 
 /// A strip piece: arc lengths and offsets at its ends, and the icon corner at either end (null

@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "vicc_glyphs/bspline/arc_length.hpp"
 #include "vicc_glyphs/bspline/bezier_conversion.hpp"
@@ -99,12 +101,35 @@ TEST(ArcLengthTest, EquidistantParametersAreEquallySpacedAlongTheCurve) {
   EXPECT_NEAR(table.lengthAt(table.parameterAt(3.3)), 3.3, 1e-9);
 }
 
+TEST(ArcLengthTest, ParametersOfSortedLengthsAreParameterAtOfEach) {
+  const BSplineCurve curve = circle(3.0);
+  const ArcLengthTable table(curve, 16);
+  const double total = table.totalLength();
+  // Before the start, ties, exact table entries, the end and past it: all clamped alike.
+  std::vector<double> lengths = {-1.0, 0.0, 0.0, table.lengths()[5], 1e-9};
+  for (int i = 1; i < 40; ++i) lengths.push_back(total * i / 40.0);
+  lengths.insert(lengths.end(), {table.lengths()[60], total, total, total + 2.0});
+  std::sort(lengths.begin(), lengths.end());
+  const std::vector<double> parameters = table.parametersAt(lengths);
+  ASSERT_EQ(parameters.size(), lengths.size());
+  for (std::size_t i = 0; i < lengths.size(); ++i) {
+    EXPECT_EQ(parameters[i], table.parameterAt(lengths[i])) << i;  // the same arithmetic
+  }
+  // A short run that starts far into the table.
+  const std::vector<double> tail = {0.9 * total, 0.95 * total};
+  EXPECT_EQ(table.parametersAt(tail)[1], table.parameterAt(0.95 * total));
+  EXPECT_TRUE(table.parametersAt({}).empty());
+}
+
 TEST(ArcLengthTest, RejectsBadInput) {
   EXPECT_THROW(ArcLengthTable(unevenLine(), 0), std::invalid_argument);
   const ArcLengthTable table(unevenLine());
   EXPECT_THROW(table.lengthAt(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
   EXPECT_THROW(table.parameterAt(std::numeric_limits<double>::infinity()), std::invalid_argument);
   EXPECT_THROW(table.equidistantParameters(1), std::invalid_argument);
+  EXPECT_THROW(table.parametersAt({2.0, 1.0}), std::invalid_argument);
+  EXPECT_THROW(table.parametersAt({1.0, std::numeric_limits<double>::quiet_NaN()}),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -35,6 +35,36 @@ TEST(BSplineCurveTest, SpanSamplesArePointAtOfEachPieceInOrder) {
   EXPECT_THROW(curve.sampleSpans(0, parameters), std::invalid_argument);
 }
 
+TEST(BSplineCurveTest, PointsOfSortedParametersArePointAtOfEach) {
+  const BSplineCurve curve = wavyCurve();
+  // Outside the domain, the knots themselves (one of them double), ties and the end.
+  const std::vector<double> parameters = {-1.0,      0.0, 0.3, 0.7,      0.7, 1.1, 1.5,
+                                          1.5000001, 2.6, 3.2, 3.999999, 4.0, 4.0, 5.0};
+  const std::vector<Point2> points = curve.pointsAt(parameters);
+  ASSERT_EQ(points.size(), parameters.size());
+  for (size_t i = 0; i < parameters.size(); ++i) {
+    EXPECT_EQ(points[i], curve.pointAt(parameters[i])) << i;  // the same arithmetic
+  }
+  EXPECT_EQ(curve.pointsAt({3.2})[0], curve.pointAt(3.2));  // starts in a later span
+  EXPECT_THROW(curve.pointsAt({1.0, 0.5}), std::invalid_argument);
+  EXPECT_THROW(curve.pointsAt({std::numeric_limits<double>::quiet_NaN()}), std::invalid_argument);
+}
+
+TEST(BSplineCurveTest, CubicBasisRowsOfSortedParametersAreBasisAtOfEach) {
+  const BSplineCurve curve = wavyCurve();
+  const std::vector<double> parameters = {0.0, 0.3, 0.7, 0.7, 1.5, 2.0, 3.999999, 4.0, 4.0};
+  const std::vector<CubicBasisRow> rows = curve.cubicBasisAt(parameters);
+  ASSERT_EQ(rows.size(), parameters.size());
+  for (size_t i = 0; i < parameters.size(); ++i) {
+    const BasisRow expected = curve.basisAt(parameters[i]);
+    EXPECT_EQ(rows[i].first_index, expected.first_index) << i;
+    for (int j = 0; j < 4; ++j) EXPECT_EQ(rows[i].values[j], expected.values[j]) << i << j;
+  }
+  EXPECT_THROW(curve.cubicBasisAt({2.0, 1.0}), std::invalid_argument);
+  const BSplineCurve quadratic(2, {0, 0, 0, 1, 1, 1}, {{0, 0}, {1, 1}, {2, 0}});
+  EXPECT_THROW(quadratic.cubicBasisAt({0.5}), std::invalid_argument);
+}
+
 TEST(BSplineCurveTest, SingleSpanClampedCubicIsTheBezierCurve) {
   DiffusionCurve bezier;
   bezier.control_points = {{0, 0}, {1, 2}, {3, 3}, {4, 0}};

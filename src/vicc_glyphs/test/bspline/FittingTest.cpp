@@ -88,6 +88,41 @@ TEST(FittingTest, CollocationMatrixRowsAreBasisValues) {
   EXPECT_NEAR(Eigen::MatrixXd(n).row(1).sum(), 1.0, 1e-12);
 }
 
+TEST(FittingTest, BandedNormalEquationsGiveTheQrMinimiser) {
+  const BSplineCurve truth = knownCurve();  // a double knot span and uneven spans
+  std::vector<double> parameters;
+  Eigen::MatrixX2d targets(121, 2);
+  std::vector<Point2> points;
+  for (int i = 0; i <= 120; ++i) {
+    parameters.push_back(3.0 * i / 120.0);
+    const double noise = 0.05 * std::sin(37.0 * i);
+    points.push_back(truth.pointAt(parameters.back()) + Point2(noise, 2.0 * noise));
+    targets.row(i) = points.back().transpose();
+  }
+  const CubicLeastSquares solver(truth, parameters);
+  const BSplineCurve reference = leastSquaresFit(3, truth.knots(), points, parameters);
+  const Eigen::MatrixX2d control = solver.solve(targets);
+  ASSERT_EQ(control.rows(), truth.controlPointCount());
+  for (int i = 0; i < control.rows(); ++i) {
+    EXPECT_LT((control.row(i).transpose() - reference.controlPoints()[i]).norm(), 1e-9) << i;
+  }
+  // The rows are the basis values: a second solve with other targets is linear in them.
+  const Eigen::MatrixX2d doubled = solver.solve(2.0 * targets);
+  EXPECT_LT((doubled - 2.0 * control).norm(), 1e-9);
+  EXPECT_THROW(solver.solve(targets.topRows(5)), std::invalid_argument);
+}
+
+TEST(FittingTest, BandedNormalEquationsRejectUndeterminedOrInvalidProblems) {
+  const BSplineCurve truth = knownCurve();
+  std::vector<double> clustered;
+  for (int i = 0; i < 30; ++i) clustered.push_back(0.7 * i / 29.0);  // later points free
+  EXPECT_THROW(CubicLeastSquares(truth, clustered), std::invalid_argument);
+  EXPECT_THROW(CubicLeastSquares(truth, {2.0, 1.0, 3.0}), std::invalid_argument);
+  EXPECT_THROW(CubicLeastSquares(truth, {-1.0, 1.0}), std::invalid_argument);
+  const BSplineCurve quadratic(2, {0, 0, 0, 1, 2, 2, 2}, {{0, 0}, {1, 1}, {2, 0}, {3, 1}});
+  EXPECT_THROW(CubicLeastSquares(quadratic, {0.0, 0.5, 1.0, 1.5, 2.0}), std::invalid_argument);
+}
+
 TEST(FittingTest, RejectsUnderdeterminedOrInvalidProblems) {
   const BSplineCurve truth = knownCurve();
   std::vector<double> clustered;

@@ -22,6 +22,9 @@ class ArcLengthTable {
   double lengthAt(double u) const;
   /// u(l): the parameter whose length from the start is l (l clamped to [0, total]).
   double parameterAt(double length) const;
+  /// parameterAt for each of `lengths`, which must not decrease (std::invalid_argument
+  /// otherwise): one walk over the table instead of a search per length.
+  std::vector<double> parametersAt(const std::vector<double>& lengths) const;
   /// `count` >= 2 parameters equally spaced in arc length, from domain start to domain end.
   std::vector<double> equidistantParameters(int count) const;
 

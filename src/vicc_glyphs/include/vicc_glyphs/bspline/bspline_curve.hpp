@@ -18,6 +18,12 @@ struct BasisRow {
   Eigen::VectorXd values;
 };
 
+/// BasisRow of a cubic: four values, no heap allocation.
+struct CubicBasisRow {
+  int first_index = 0;
+  Eigen::Vector4d values = Eigen::Vector4d::Zero();
+};
+
 class BSplineCurve {
  public:
   /// Validates and stores the curve. Throws std::invalid_argument with a reason when the degree
@@ -59,6 +65,9 @@ class BSplineCurve {
   Point2 derivativeAt(double u, int order = 1) const;
   /// The p + 1 basis functions (or their derivatives of `order`) that may be non-zero at u.
   BasisRow basisAt(double u, int order = 0) const;
+  /// basisAt for each of `parameters` of a cubic curve, parameters that must not decrease
+  /// (std::invalid_argument otherwise, or for another degree): the spans are walked in order.
+  std::vector<CubicBasisRow> cubicBasisAt(const std::vector<double>& parameters) const;
 
   /// Samples `count` >= 2 points at parameters equally spaced over the domain.
   std::vector<Point2> sample(int count) const;
@@ -66,6 +75,9 @@ class BSplineCurve {
   /// parameters from its start, then the domain end; their parameters go to `parameters`. The
   /// points equal pointAt's; the pieces are walked in order instead of searched per point.
   std::vector<Point2> sampleSpans(int per_span, std::vector<double>& parameters) const;
+  /// pointAt for each of `parameters`, which must not decrease (std::invalid_argument
+  /// otherwise): the knot spans are walked in order instead of searched per point.
+  std::vector<Point2> pointsAt(const std::vector<double>& parameters) const;
   /// True when the first and last curve points coincide within `tolerance`.
   bool isClosed(double tolerance = 1e-9) const;
 

@@ -1,6 +1,7 @@
 #pragma once
 // B-spline interpolation and least-squares approximation (thesis 2.5.3, Eqs. 2.43 and 2.47).
 
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <vector>
 
@@ -29,6 +30,30 @@ std::vector<double> chordLengthParameters(const std::vector<Point2>& points, dou
 BSplineCurve leastSquaresFit(int degree, std::vector<double> knots,
                              const std::vector<Point2>& points,
                              const std::vector<double>& parameters);
+
+/// Least squares on a cubic basis at fixed parameters, for many sets of points: the normal
+/// equations N^T N D = N^T P (the minimiser leastSquaresFit finds by QR). N^T N is banded (each
+/// parameter touches four neighbouring basis functions), so it is summed from the basis rows
+/// directly and factorised once in its natural order, which has no fill-in; every solve costs
+/// one back substitution. For data that determine the curve well (many parameters per span);
+/// QR is the better conditioned choice for interpolation-like fits.
+class CubicLeastSquares {
+ public:
+  /// `basis`: a cubic (its de Boor points are ignored); `parameters` must not decrease and lie in
+  /// its domain. Throws std::invalid_argument for another degree, a bad parameter or when the
+  /// parameters do not determine every de Boor point (N^T N not positive definite).
+  CubicLeastSquares(const BSplineCurve& basis, const std::vector<double>& parameters);
+
+  int parameterCount() const { return static_cast<int>(rows_.size()); }
+  /// The de Boor points for one target point per parameter (row i for parameters[i]).
+  Eigen::MatrixX2d solve(const Eigen::MatrixX2d& targets) const;
+
+ private:
+  int control_count_ = 0;
+  std::vector<CubicBasisRow> rows_;
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
+      factor_;
+};
 
 }  // namespace bspline
 }  // namespace vicc_glyphs
