@@ -6,12 +6,15 @@
 // Usage (--help): vicc_glyphs_pacemod_bench [ICON_DIR] [--quick] [--verbose] [--opencv-labels]
 //        [--waveform sine|triangle|sawtooth|rectangle] [--no-render]
 //        [--icon NAME.svg] [--frequency WAVES_PER_10MM] [--amplitude MM] [--overlays DIR]
+//        [--times FILE.tsv]
 
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <map>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -43,7 +46,8 @@ double threadMilliseconds() {
 bool verbose = false;
 bool render_glyphs = true;  // --no-render: checks only (faster searches for failures)
 WaveOptions options;
-std::string overlay_dir;  // --overlays: an SVG picture of every glyph that fails a check
+std::string overlay_dir;          // --overlays: an SVG picture of every glyph that fails a check
+std::FILE* times_file = nullptr;  // --times: one line per glyph
 
 struct Totals {
   int glyphs = 0;
@@ -96,6 +100,13 @@ void runGlyph(const fs::path& icon, const WaveSpec& spec, DiffusionCurveRenderer
   totals.render_ms.push_back(end - render_start);
   totals.total_ms.push_back(end - start);
   ++totals.glyphs;
+  if (times_file) {
+    std::fprintf(times_file, "%s\t%s\t%g\t%g\t%.2f\t%.2f\t%.2f\t%.2f\t%d\n",
+                 icon.filename().c_str(), waveformName(spec.waveform).c_str(),
+                 spec.waves_per_mm * 10, spec.amplitude_mm, modify_start - start,
+                 render_start - modify_start, end - render_start, end - start,
+                 render_glyphs ? result.report.multigrid.fine_cycles : -1);
+  }
   const measure::GlyphCheck check =
       measure::checkGlyph(original, image, reports, spec, kSize / kSizeMm);
   if (verbose && (check.new_crossings > 0 || !check.failures.empty())) {
@@ -169,6 +180,7 @@ const std::vector<cli::OptionSpec> kOptionSpecs = {
     {"frequency", "F", "only this frequency, waves per 10 mm"},
     {"amplitude", "A", "only this amplitude, mm"},
     {"overlays", "DIR", "an SVG picture of every glyph that fails a check"},
+    {"times", "FILE.tsv", "CPU ms per glyph (import, modify, render, total) and CG iterations"},
 };
 
 std::string usage() {
@@ -200,6 +212,16 @@ int run(const std::vector<std::string>& args) {
   const double only_frequency = parsed.number("frequency", 0.0, 0.01, 100.0);
   const double only_amplitude = parsed.number("amplitude", -1.0, 0.0, 10.0);
   overlay_dir = parsed.value("overlays");
+  const std::string times_path = parsed.value("times");
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> times(nullptr, &std::fclose);
+  if (!times_path.empty()) {
+    times.reset(std::fopen(times_path.c_str(), "w"));
+    if (!times) throw std::runtime_error("cannot write " + times_path);
+    std::fprintf(times.get(),
+                 "icon\twaveform\twaves_per_10mm\tamplitude_mm\timport_ms\tmodify_ms\t"
+                 "render_ms\ttotal_ms\tcg_iterations\n");
+    times_file = times.get();
+  }
   std::vector<fs::path> icons;
   for (const auto& entry : fs::directory_iterator(dir)) {
     if (entry.path().extension() == ".svg" &&

@@ -40,6 +40,7 @@ OffsetFit::OffsetFit(const bspline::BSplineCurve& original, const bspline::ArcLe
                      double area)
     : knots_(std::move(knots)), frame_{original, table, area}, corners_(corners) {
   std::vector<double> lengths;
+  lengths.reserve(knots_.size() * kSamplesPerSpan);
   for (std::size_t i = 3; i + 4 < knots_.size(); ++i) {
     if (knots_[i + 1] <= knots_[i]) continue;
     for (int k = 0; k < kSamplesPerSpan; ++k) {
@@ -49,6 +50,7 @@ OffsetFit::OffsetFit(const bspline::BSplineCurve& original, const bspline::ArcLe
   lengths.push_back(knots_.back());
   const double end = knots_.back();
   const std::vector<ContourSample> on_contour = frame_.samples(lengths);
+  samples_.reserve(lengths.size());
   for (std::size_t i = 0; i < lengths.size(); ++i) {
     const double l = lengths[i];
     Sample sample{l, on_contour[i].point, on_contour[i].normal, -1, 0, 0.0};

@@ -26,27 +26,36 @@ bool adjacent(int segments, bool closed, int i, int j) {
 }
 
 struct SegmentBox {
+  // User-provided, so that resizing the buckets does not zero them first (they are filled
+  // right after): a high-frequency wave has hundreds of thousands of them.
+  SegmentBox() {}
+  SegmentBox(SegmentRef segment, const Point2& lo, const Point2& hi)
+      : segment(segment), lo(lo), hi(hi) {}
   SegmentRef segment;
   Point2 lo, hi;
 };
 
 // Segments bucketed by the grid cells their bounding boxes touch (a counting sort: cell c
-// holds bucketed[start[c]] ... bucketed[start[c + 1] - 1], copies of the boxes in increasing
-// lo.x, so that a sweep along x meets only the pairs whose x ranges overlap).
+// holds bucketed[start[c]] ... bucketed[start[c + 1] - 1], the boxes in increasing lo.x, so
+// that a sweep along x meets only the pairs whose x ranges overlap). The boxes are made from
+// the polylines in each pass instead of kept: a high-frequency wave has hundreds of thousands
+// of segments, and fresh memory costs page faults.
 struct SegmentGrid {
   static constexpr double kMaxCells = 1 << 22;
-  std::vector<SegmentBox> boxes, bucketed;
+  std::vector<SegmentBox> bucketed;
   std::vector<int> start;
   Point2 origin = Point2::Zero();
-  double cell = 1.0;
+  double cell = 1.0, inverse_cell = 1.0;
   long long nx = 0, ny = 0;
 
-  long long column(double x) const {
-    return std::clamp<long long>(std::floor((x - origin.x()) / cell), 0, nx - 1);
+  // Coordinates are at or right of (below) the origin, the smallest box corner: truncation is
+  // the floor. Clamped to the grid against round-off at the far end.
+  static long long index(double offset, double inverse_cell, long long count) {
+    const long long i = offset > 0.0 ? static_cast<long long>(offset * inverse_cell) : 0;
+    return i < count ? i : count - 1;
   }
-  long long row(double y) const {
-    return std::clamp<long long>(std::floor((y - origin.y()) / cell), 0, ny - 1);
-  }
+  long long column(double x) const { return index(x - origin.x(), inverse_cell, nx); }
+  long long row(double y) const { return index(y - origin.y(), inverse_cell, ny); }
 
   template <class Visit>
   void forEachCell(const SegmentBox& box, Visit&& visit) const {
@@ -57,22 +66,30 @@ struct SegmentGrid {
     }
   }
 
+  // Every segment's box, skipping segments with a non-finite end.
+  template <class Visit>
+  static void forEachBox(const std::vector<Polyline>& lines, Visit&& visit) {
+    for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
+      for (int i = 0; i + 1 < static_cast<int>(lines[l].size()); ++i) {
+        const SegmentBox box{
+            {l, i}, lines[l][i].cwiseMin(lines[l][i + 1]), lines[l][i].cwiseMax(lines[l][i + 1])};
+        if (box.lo.allFinite() && box.hi.allFinite()) visit(box);
+      }
+    }
+  }
+
   SegmentGrid(const std::vector<Polyline>& lines, double min_cell) {
     if (!(min_cell > 0.0) || !std::isfinite(min_cell)) {
       throw std::invalid_argument("findCrossings: the cell size must be a finite number > 0");
     }
     Point2 lo = Point2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
-      for (int i = 0; i + 1 < static_cast<int>(lines[l].size()); ++i) {
-        const SegmentBox box{
-            {l, i}, lines[l][i].cwiseMin(lines[l][i + 1]), lines[l][i].cwiseMax(lines[l][i + 1])};
-        if (!box.lo.allFinite() || !box.hi.allFinite()) continue;
-        boxes.push_back(box);
-        lo = lo.cwiseMin(box.lo);
-        hi = hi.cwiseMax(box.hi);
-      }
-    }
-    if (boxes.empty()) return;
+    bool any = false;
+    forEachBox(lines, [&](const SegmentBox& box) {
+      lo = lo.cwiseMin(box.lo);
+      hi = hi.cwiseMax(box.hi);
+      any = true;
+    });
+    if (!any) return;
     origin = lo;
     if (!(hi - lo).allFinite()) throw std::invalid_argument("findCrossings: coordinates too large");
     // A coarser grid finds the same crossings: only the number of pairs tried grows.
@@ -82,16 +99,18 @@ struct SegmentGrid {
              (std::floor((hi.y() - lo.y()) / size) + 1.0);
     };
     while (!(cells(cell) <= kMaxCells)) cell *= 2.0;
+    inverse_cell = 1.0 / cell;
     nx = static_cast<long long>(std::floor((hi.x() - lo.x()) / cell)) + 1;
     ny = static_cast<long long>(std::floor((hi.y() - lo.y()) / cell)) + 1;
+    // Counts per cell, summed up to each cell's end; filling backwards leaves each its start.
     start.assign(static_cast<std::size_t>(nx * ny) + 1, 0);
-    for (const SegmentBox& box : boxes) forEachCell(box, [&](long long c) { ++start[c + 1]; });
+    forEachBox(lines,
+               [&](const SegmentBox& box) { forEachCell(box, [&](long long c) { ++start[c]; }); });
     for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
     bucketed.resize(start.back());
-    std::vector<int> fill(start.begin(), start.end() - 1);
-    for (const SegmentBox& box : boxes) {
-      forEachCell(box, [&](long long c) { bucketed[fill[c]++] = box; });
-    }
+    forEachBox(lines, [&](const SegmentBox& box) {
+      forEachCell(box, [&](long long c) { bucketed[--start[c]] = box; });
+    });
     for (std::size_t c = 0; c + 1 < start.size(); ++c) {
       if (start[c + 1] - start[c] < 2) continue;
       std::sort(bucketed.begin() + start[c], bucketed.begin() + start[c + 1],
