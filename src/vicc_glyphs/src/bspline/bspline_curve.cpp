@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -145,6 +144,14 @@ int BSplineCurve::findSpan(double u) const {
   return static_cast<int>(upper - knots_.begin()) - 1;
 }
 
+int BSplineCurve::nextSpan(double v, int span) const {
+  // The first is searched, and so is the domain's end (findSpan's special case: it belongs to
+  // the last span); the others are walked to.
+  if (span < 0 || v >= domainEnd()) return findSpan(v);
+  while (knots_[span + 1] <= v) ++span;  // findSpan: the last knot <= v
+  return span;
+}
+
 int BSplineCurve::multiplicity(double u) const {
   const auto range = std::equal_range(knots_.begin(), knots_.end(), u);  // knots are sorted
   return static_cast<int>(range.second - range.first);
@@ -210,18 +217,14 @@ BasisRow BSplineCurve::basisAt(double u, int order) const {
 std::vector<CubicBasisRow> BSplineCurve::cubicBasisAt(const std::vector<double>& parameters) const {
   if (degree_ != 3) fail("cubicBasisAt needs a cubic, got degree " + std::to_string(degree_));
   std::vector<CubicBasisRow> rows(parameters.size());
-  int span = -1;  // the first span is searched, the others walked to
-  double previous = -std::numeric_limits<double>::infinity();
+  int span = -1;
   std::array<Eigen::Vector4d, 4> unit;
   for (std::size_t i = 0; i < parameters.size(); ++i) {
     const double v = clampToDomain(parameters[i]);
-    if (parameters[i] < previous) fail("cubicBasisAt needs parameters that do not decrease");
-    previous = parameters[i];
-    if (span < 0 || v >= domainEnd()) {
-      span = findSpan(v);  // also findSpan's special case: the end belongs to the last span
-    } else {
-      while (knots_[span + 1] <= v) ++span;  // findSpan: the last knot <= v
+    if (i > 0 && parameters[i] < parameters[i - 1]) {
+      fail("cubicBasisAt needs parameters that do not decrease");
     }
+    span = nextSpan(v, span);
     unit.fill(Eigen::Vector4d::Zero());
     rows[i] = {span - 3, unitBasis<3>(knots_, 3, span, unit.data(), v, 0)};
   }
@@ -268,17 +271,13 @@ std::vector<Point2> BSplineCurve::sampleSpans(int per_span, std::vector<double>&
 std::vector<Point2> BSplineCurve::pointsAt(const std::vector<double>& parameters) const {
   std::vector<Point2> points;
   points.reserve(parameters.size());
-  int span = -1;  // the first span is searched, the others walked to
-  double previous = -std::numeric_limits<double>::infinity();
-  for (const double u : parameters) {
-    const double v = clampToDomain(u);
-    if (u < previous) fail("pointsAt needs parameters that do not decrease");
-    previous = u;
-    if (span < 0 || v >= domainEnd()) {
-      span = findSpan(v);  // also findSpan's special case: the end belongs to the last span
-    } else {
-      while (knots_[span + 1] <= v) ++span;  // findSpan: the last knot <= v
+  int span = -1;
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const double v = clampToDomain(parameters[i]);
+    if (i > 0 && parameters[i] < parameters[i - 1]) {
+      fail("pointsAt needs parameters that do not decrease");
     }
+    span = nextSpan(v, span);
     points.push_back(evaluateOn(v, span, 0));
   }
   return points;

@@ -84,6 +84,8 @@ class BSplineCurve {
  private:
   void validate() const;
   double clampToDomain(double u) const;
+  /// findSpan(v) for a v in the domain not below the one whose span was `span` (-1: none yet).
+  int nextSpan(double v, int span) const;
   /// derivativeAt for a v in the domain whose knot span findSpan(v) is `span`.
   Point2 evaluateOn(double v, int span, int order) const;
 
