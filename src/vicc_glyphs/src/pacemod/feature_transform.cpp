@@ -9,12 +9,14 @@ namespace {
 
 // Maurer's "RemoveFT": with candidate features u, v (rows ordered) and w on lines through
 // the column at rows ru < rv < rw and horizontal offsets du, dv, dw, v can never be the nearest
-// on this column when the Voronoi boundaries of u|v and v|w cross before v's row range.
-bool removable(double du, double dv, double dw, double ru, double rv, double rw) {
-  const double a = rv - ru;
-  const double b = rw - rv;
-  const double c = a + b;
-  return c * dv * dv - b * du * du - a * dw * dw - a * b * c > 0.0;
+// on this column when the Voronoi boundaries of u|v and v|w cross before v's row range. In
+// integers: exact (products of three pixel distances, far below 2^63), and cheaper than
+// converting every operand to double.
+bool removable(long long du, long long dv, long long dw, long long ru, long long rv, long long rw) {
+  const long long a = rv - ru;
+  const long long b = rw - rv;
+  const long long c = a + b;
+  return c * dv * dv - b * du * du - a * dw * dw - a * b * c > 0;
 }
 
 }  // namespace
@@ -48,13 +50,13 @@ void maurerFeatureTransform(const cv::Mat& mask, std::vector<int>& result,
   // Pass 2: per column, the lower envelope of the row candidates (partial Voronoi diagram).
   result.assign(row_feature.size(), -1);
   std::vector<int> stack_row(height), stack_col(height);
+  std::vector<long long> stack_dx2(height);  // squared horizontal offset of each candidate
   for (int x = 0; x < width; ++x) {
     int top = 0;
     for (int y = 0; y < height; ++y) {
       const int fx = row_feature[static_cast<std::size_t>(y) * width + x];
       if (fx < 0) continue;
-      const double dw = fx - x;
-      while (top >= 2 && removable(stack_col[top - 2] - x, stack_col[top - 1] - x, dw,
+      while (top >= 2 && removable(stack_col[top - 2] - x, stack_col[top - 1] - x, fx - x,
                                    stack_row[top - 2], stack_row[top - 1], y)) {
         --top;
       }
@@ -63,11 +65,15 @@ void maurerFeatureTransform(const cv::Mat& mask, std::vector<int>& result,
       ++top;
     }
     if (top == 0) continue;
+    for (int i = 0; i < top; ++i) {
+      const long long dx = stack_col[i] - x;
+      stack_dx2[i] = dx * dx;
+    }
     int k = 0;
     for (int y = 0; y < height; ++y) {
       auto distance2 = [&](int i) {
-        const double dx = stack_col[i] - x, dy = stack_row[i] - y;
-        return dx * dx + dy * dy;
+        const long long dy = stack_row[i] - y;
+        return stack_dx2[i] + dy * dy;
       };
       while (k + 1 < top && distance2(k + 1) <= distance2(k)) ++k;
       result[static_cast<std::size_t>(y) * width + x] = stack_row[k] * width + stack_col[k];
