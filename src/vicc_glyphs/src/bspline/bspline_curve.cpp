@@ -255,12 +255,9 @@ std::vector<Point2> BSplineCurve::sampleSpans(int per_span, std::vector<double>&
     for (int k = 0; k < per_span; ++k) {
       const double u = breaks[i] + (breaks[i + 1] - breaks[i]) * k / per_span;
       parameters.push_back(u);
-      if (u >= domainEnd()) {  // round-off on the last piece: findSpan's special case
-        points.push_back(pointAt(u));
-        continue;
-      }
-      while (knots_[span + 1] <= u) ++span;  // findSpan: the last knot <= u
-      points.push_back(evaluateOn(u, span, 0));
+      const double v = clampToDomain(u);  // round-off on the last piece may pass the end
+      span = nextSpan(v, span);
+      points.push_back(evaluateOn(v, span, 0));
     }
   }
   parameters.push_back(breaks.back());
