@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Glyph bench (issues 5, 16): renders every vendored icon, the gallery's coloured DCIs and the
-# ladybug sample at 512 x 512 on one core and writes bench/glyphs/results.md: one-shot render
+# ladybug sample at 512 x 512 on one core and writes the tables of bench/glyphs/results.md
+# (the hand-written sections below them stay): one-shot render
 # time (the first render, with a fresh renderer), median render time (renderer reused, first
 # render excluded), CG iterations with the default stopping criterion, its error estimate,
 # the mean and largest absolute error against a direct sparse solve of the same discrete
@@ -41,6 +42,10 @@ for input in "${inputs[@]}"; do
 | $(basename "$input") | $median |"
 done
 cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"
+# The hand-written sections after the generated tables (from the first "## " heading on: the
+# history of earlier measurements) are kept; only the tables above them are replaced.
+history=""
+if [[ -f "$here/results.md" ]]; then history="$(sed -n '/^## /,$p' "$here/results.md")"; fi
 {
   echo "# Glyph bench results"
   echo
@@ -68,5 +73,9 @@ cpu="$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')"
   echo "Load average when it finished: $(cut -d' ' -f1-3 /proc/loadavg)."
   echo
   echo "$process_table"
+  if [[ -n "$history" ]]; then
+    echo
+    echo "$history"
+  fi
 } >"$here/results.md"
 cat "$here/results.md"
