@@ -1,5 +1,4 @@
 # Formats and icon import (issue 5): Orzan XML, SVG and raster (PNG) to diffusion curves.
-find_package(OpenCV REQUIRED COMPONENTS core imgproc imgcodecs)
 find_package(tinyxml2 QUIET)
 if(TARGET tinyxml2::tinyxml2)
   set(VICC_GLYPHS_TINYXML2 tinyxml2::tinyxml2)
@@ -31,7 +30,7 @@ add_library(vicc_glyphs_formats
 )
 target_include_directories(vicc_glyphs_formats SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
 target_compile_options(vicc_glyphs_formats PRIVATE ${VICC_WARNINGS})
-target_link_libraries(vicc_glyphs_formats vicc_glyphs_dci ${VICC_GLYPHS_TINYXML2} ${OpenCV_LIBRARIES})
+target_link_libraries(vicc_glyphs_formats vicc_glyphs_dci ${VICC_GLYPHS_TINYXML2} ${VICC_GLYPHS_OPENCV})
 
 add_library(vicc_glyphs_io
   src/io/color_quantization.cpp
@@ -41,7 +40,8 @@ add_library(vicc_glyphs_io
 )
 target_include_directories(vicc_glyphs_io SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS} ${VICC_GLYPHS_POTRACE_INCLUDE})
 target_compile_options(vicc_glyphs_io PRIVATE ${VICC_WARNINGS})
-target_link_libraries(vicc_glyphs_io vicc_glyphs_formats ${VICC_GLYPHS_POTRACE} ${OpenCV_LIBRARIES})
+target_link_libraries(vicc_glyphs_io vicc_glyphs_formats vicc_glyphs_png ${VICC_GLYPHS_POTRACE}
+  ${VICC_GLYPHS_OPENCV})
 
 # The SVG painting model on polygons: Clipper (Debian libpolyclipping-dev, pkg-config polyclipping)
 # for boolean operations and stroke offsetting (Boost licence: fine in the formats library).
@@ -74,6 +74,7 @@ if(CATKIN_ENABLE_TESTING)
     test/io/LoadTest.cpp
     test/io/PublishedSampleTest.cpp
     test/io/UsvgSceneTest.cpp
+    test/io/PngCodecTest.cpp
   )
   target_include_directories(vicc_glyphs_io_test SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
   target_include_directories(vicc_glyphs_io_test PRIVATE src/io)

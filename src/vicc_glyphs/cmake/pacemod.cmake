@@ -5,7 +5,6 @@ if(NOT TARGET vicc_glyphs_bspline)
   message(STATUS "vicc_glyphs: PACEMOD needs the B-spline toolkit; not built")
   return()
 endif()
-find_package(OpenCV REQUIRED COMPONENTS core imgproc)
 
 add_library(vicc_glyphs_pacemod
   src/pacemod/wave_spec.cpp
@@ -28,7 +27,7 @@ add_library(vicc_glyphs_pacemod
 )
 target_compile_options(vicc_glyphs_pacemod PRIVATE ${VICC_WARNINGS})
 target_include_directories(vicc_glyphs_pacemod SYSTEM PUBLIC ${OpenCV_INCLUDE_DIRS})
-target_link_libraries(vicc_glyphs_pacemod vicc_glyphs_bspline vicc_glyphs_dci ${OpenCV_LIBS})
+target_link_libraries(vicc_glyphs_pacemod vicc_glyphs_bspline vicc_glyphs_dci ${VICC_GLYPHS_OPENCV})
 
 install(TARGETS vicc_glyphs_pacemod
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}

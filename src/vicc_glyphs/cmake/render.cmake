@@ -1,5 +1,4 @@
 # Multigrid diffusion-curve renderer (ROS-free: Eigen + OpenCV) and its ROS image adapter.
-find_package(OpenCV REQUIRED COMPONENTS core imgproc imgcodecs)
 
 add_library(vicc_glyphs_render
   src/render/lattice_crossings.cpp
@@ -15,7 +14,7 @@ add_library(vicc_glyphs_render
   src/render/png_output.cpp)
 target_compile_options(vicc_glyphs_render PRIVATE ${VICC_WARNINGS})
 target_include_directories(vicc_glyphs_render SYSTEM PUBLIC ${OpenCV_INCLUDE_DIRS})
-target_link_libraries(vicc_glyphs_render vicc_glyphs_dci ${OpenCV_LIBS})
+target_link_libraries(vicc_glyphs_render vicc_glyphs_dci vicc_glyphs_png ${VICC_GLYPHS_OPENCV})
 
 # sensor_msgs/Image is a header-only message type; only the adapter sees ROS headers.
 add_library(vicc_glyphs_ros src/ros/image_message.cpp)

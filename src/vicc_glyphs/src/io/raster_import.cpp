@@ -4,13 +4,13 @@
 #include "vicc_glyphs/io/raster_import.hpp"
 
 #include <algorithm>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
 #include "color_quantization.hpp"
 #include "potrace_tracing.hpp"
 #include "side_colors.hpp"
+#include "vicc_glyphs/io/png_codec.hpp"
 
 namespace vicc_glyphs {
 namespace {
@@ -18,32 +18,18 @@ namespace {
 constexpr int kMaxRasterSide = 4096;
 constexpr std::size_t kMaxSamplesPerCurve = 4096;
 
-// 8-bit BGR with transparency composited onto `background` (RGB in [0, 1]).
-cv::Mat3b toOpaqueBgr(const cv::Mat& input, const Color& background) {
-  cv::Mat image = input;
-  if (image.depth() != CV_8U) {
-    const double scale = image.depth() == CV_16U ? 1.0 / 257.0 : 1.0;
-    image.convertTo(image, CV_8U, scale);
-  }
-  cv::Mat3b bgr;
-  if (image.channels() == 1) {
-    cv::cvtColor(image, bgr, cv::COLOR_GRAY2BGR);
-  } else if (image.channels() == 3) {
-    bgr = image;
-  } else if (image.channels() == 4) {
-    bgr.create(image.size());
-    const cv::Vec3d back(background[2] * 255.0, background[1] * 255.0, background[0] * 255.0);
-    for (int y = 0; y < image.rows; ++y) {
-      for (int x = 0; x < image.cols; ++x) {
-        const cv::Vec4b p = image.at<cv::Vec4b>(y, x);
-        const double alpha = p[3] / 255.0;
-        for (int c = 0; c < 3; ++c) {
-          bgr(y, x)[c] = cv::saturate_cast<uchar>(alpha * p[c] + (1.0 - alpha) * back[c]);
-        }
+// 8-bit BGR from 8-bit BGRA, transparency composited onto `background` (RGB in [0, 1]).
+cv::Mat3b toOpaqueBgr(const cv::Mat4b& bgra, const Color& background) {
+  cv::Mat3b bgr(bgra.size());
+  const cv::Vec3d back(background[2] * 255.0, background[1] * 255.0, background[0] * 255.0);
+  for (int y = 0; y < bgra.rows; ++y) {
+    for (int x = 0; x < bgra.cols; ++x) {
+      const cv::Vec4b p = bgra(y, x);
+      const double alpha = p[3] / 255.0;
+      for (int c = 0; c < 3; ++c) {
+        bgr(y, x)[c] = cv::saturate_cast<uchar>(alpha * p[c] + (1.0 - alpha) * back[c]);
       }
     }
-  } else {
-    throw std::invalid_argument("unsupported channel count " + std::to_string(image.channels()));
   }
   return bgr;
 }
@@ -112,14 +98,9 @@ DiffusionCurveImage importRaster(const std::string& path, const RasterImportOpti
   }
   cv::Mat input;
   try {
-    input = cv::imread(path, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception& e) {
-    throw FormatError(path, "", std::string("cannot decode image: ") + e.what());
-  }
-  if (input.empty()) throw FormatError(path, "", "cannot read image (missing or not an image)");
-  if (input.cols > kMaxRasterSide || input.rows > kMaxRasterSide) {
-    throw FormatError(path, "",
-                      "image larger than " + std::to_string(kMaxRasterSide) + " pixels per side");
+    input = readPngBgra(path, kMaxRasterSide);  // the size is checked before decoding
+  } catch (const std::runtime_error& e) {
+    throw FormatError(path, "", std::string("cannot read image: ") + e.what());
   }
   DiffusionCurveImage image;
   try {

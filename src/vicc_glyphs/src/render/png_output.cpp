@@ -1,8 +1,8 @@
 #include "vicc_glyphs/render/png_output.hpp"
 
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 #include <stdexcept>
+
+#include "vicc_glyphs/io/png_codec.hpp"
 
 namespace vicc_glyphs {
 
@@ -15,15 +15,7 @@ cv::Mat toRgb8(const cv::Mat& rgb) {
 
 void writePng(const cv::Mat& rgb, const std::string& path) {
   if (rgb.empty()) throw std::runtime_error("cannot write an empty image to " + path);
-  cv::Mat bgr;
-  cv::cvtColor(toRgb8(rgb), bgr, cv::COLOR_RGB2BGR);
-  bool written = false;
-  try {
-    written = cv::imwrite(path, bgr);
-  } catch (const cv::Exception& e) {
-    throw std::runtime_error("cannot write " + path + ": " + e.what());
-  }
-  if (!written) throw std::runtime_error("cannot write " + path);
+  writePng8(toRgb8(rgb), ChannelOrder::kRgb, path);
 }
 
 }  // namespace vicc_glyphs

@@ -2,12 +2,11 @@
 
 #include <cmath>
 #include <filesystem>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
 #include "vicc_common/ros_parameters.hpp"
 #include "vicc_glyphs/design/design_builder.hpp"
+#include "vicc_glyphs/io/png_codec.hpp"
 #include "vicc_glyphs/perception/perception_model_yaml.hpp"
 #include "vicc_glyphs/render/png_output.hpp"
 #include "vicc_glyphs/ros/image_message.hpp"
@@ -147,11 +146,7 @@ bool GlyphServer::render(vicc_msgs::RenderGlyph::Request& request,
     const cv::Mat rgb8 = renderCached(entry, levels, request.size);
     response.image = toImageMsg(rgb8, "glyph");
     response.image.header.stamp = ros::Time::now();
-    if (request.want_png) {
-      cv::Mat bgr;
-      cv::cvtColor(rgb8, bgr, cv::COLOR_RGB2BGR);
-      cv::imencode(".png", bgr, response.png);
-    }
+    if (request.want_png) response.png = encodePng8(rgb8, ChannelOrder::kRgb);
     entry.latest = boost::make_shared<sensor_msgs::Image>(response.image);
     if (entry.publisher.getNumSubscribers() > 0) entry.publisher.publish(entry.latest);
     response.success = true;

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
 #include "command_line.hpp"
 #include "model_path.hpp"
 #include "vicc_glyphs/design/design_builder.hpp"
+#include "vicc_glyphs/io/png_codec.hpp"
 #include "vicc_glyphs/perception/perception_model_yaml.hpp"
 #include "vicc_glyphs/render/png_output.hpp"
 #include "vicc_glyphs/render/renderer.hpp"
@@ -170,7 +170,7 @@ int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out,
       cv::cvtColor(toRgb8(result.image), bgr, cv::COLOR_RGB2BGR);
       stamp(map, bgr, centres[i], rows[i].label);
     }
-    if (!cv::imwrite(output, map)) throw std::runtime_error("cannot write " + output);
+    writePng8(map, ChannelOrder::kBgr, output);
     out << "wrote " << output << " (" << rows.size() << " glyphs)\n";
   } catch (const std::exception& e) {
     err << "vicc_glyph design-map: " << e.what() << "\n";

@@ -1,5 +1,5 @@
 #pragma once
-// Imports raster icons (PNG and anything OpenCV reads): the image is quantised into a few colour
+// Imports raster icons (PNG files of any colour type and depth): the image is quantised into a few colour
 // regions, each region's boundary is traced into cubic Beziers with potrace, and the colours on
 // both sides of every curve are sampled from the image a few pixels off the curve.
 
