@@ -193,6 +193,13 @@ TEST(CurveStroke, AgreesWithClipperOnCurvyStrokes) {
   const Paths ours = outline(curveStrokeArea, c, ring, stretch);
   EXPECT_GE(iou(ours, outline(strokeArea, c, ring, stretch)), 0.99);
   EXPECT_NEAR(areaOf(ours), kPi * 2.0 * (53.0 * 53.0 - 47.0 * 47.0), 10.0);
+  // A mirroring transform reverses every piece; the orientation is normalised per piece.
+  Affine2 mirror = Affine2::Identity();
+  mirror.translate(Eigen::Vector2d(256.0, 0.0)).scale(Eigen::Vector2d(-1.0, 1.0));
+  const std::vector<Subpath> s = cases[0];
+  const Paths mirrored = outline(curveStrokeArea, s, ring, mirror);
+  EXPECT_NEAR(areaOf(mirrored), areaOf(curves(s, ring)), 0.01);
+  EXPECT_GE(iou(mirrored, outline(strokeArea, s, ring, mirror)), 0.99);
 }
 
 TEST(CurveStroke, DashedStrokesUseClipper) {
