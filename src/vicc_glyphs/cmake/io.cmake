@@ -51,6 +51,7 @@ target_sources(vicc_glyphs_formats PRIVATE
   src/io/clipper_geometry.cpp
   src/io/paint_map.cpp
   src/io/svg_stroke.cpp
+  src/io/curve_stroke.cpp
   src/io/svg_css.cpp
   src/io/svg_paint_server.cpp
   src/io/region_curves.cpp
@@ -75,8 +76,10 @@ if(CATKIN_ENABLE_TESTING)
     test/io/PublishedSampleTest.cpp
     test/io/UsvgSceneTest.cpp
     test/io/PngCodecTest.cpp
+    test/io/CurveStrokeTest.cpp
   )
-  target_include_directories(vicc_glyphs_io_test SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
+  target_include_directories(vicc_glyphs_io_test SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS}
+    ${VICC_GLYPHS_POLYCLIPPING_INCLUDE_DIRS})
   target_include_directories(vicc_glyphs_io_test PRIVATE src/io)
   target_compile_options(vicc_glyphs_io_test PRIVATE ${VICC_WARNINGS})
   target_compile_definitions(vicc_glyphs_io_test PRIVATE

@@ -8,10 +8,13 @@
 #
 #   bench/fidelity/run_fidelity.sh [PER_SET] [SIZE]     (defaults 30 icons per set, 256 px)
 #   VICC_FIDELITY_SETS="feather tabler-outline" bench/fidelity/run_fidelity.sh   (some sets)
+#   VICC_FIDELITY_RENDER_ARGS="--stroke-outliner curves" ...   (extra vicc_glyph render flags)
+#   VICC_FIDELITY_RESULTS=/some/dir ...   (where to write icons.tsv / summary.md)
 #
 # Needs: npm, rsvg-convert, a built workspace (devel/lib/vicc_glyphs/vicc_glyph and
 # vicc_glyph_fidelity_compare; set VICC_GLYPH_BIN_DIR to override). Writes
-# results/icons.tsv and results/summary.md next to this script (results/ is not committed).
+# results/icons.tsv and results/summary.md next to this script (results/ is not committed;
+# VICC_FIDELITY_RESULTS overrides the directory).
 set -euo pipefail
 
 per_set="${1:-30}"
@@ -26,7 +29,8 @@ command -v rsvg-convert >/dev/null || { echo "missing rsvg-convert (librsvg2-bin
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-results="$here/results"
+results="${VICC_FIDELITY_RESULTS:-$here/results}"
+read -r -a render_args <<< "${VICC_FIDELITY_RENDER_ARGS:-}"
 mkdir -p "$results"
 
 # set name | npm package | directory inside the package
@@ -75,7 +79,8 @@ for entry in "${sets[@]}"; do
       continue
     fi
     start=$(date +%s.%N)
-    if message="$("$bin/vicc_glyph" render "$svg" --size "$size" --out "$ours" --dci "$dci" 2>&1 >/dev/null)"; then
+    if message="$("$bin/vicc_glyph" render "$svg" --size "$size" --out "$ours" --dci "$dci" \
+        "${render_args[@]}" 2>&1 >/dev/null)"; then
       seconds=$(echo "$(date +%s.%N) - $start" | bc)
       curves="$(grep -c '<curve[ >]' "$dci" || true)"
       points="$(grep -o '<control_point' "$dci" | wc -l)"

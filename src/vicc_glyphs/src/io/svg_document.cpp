@@ -8,6 +8,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "curve_stroke.hpp"
 #include "svg_paint_server.hpp"
 #include "svg_path_data.hpp"
 #include "svg_shapes.hpp"
@@ -256,8 +257,9 @@ class SvgWalker {
     }
     if (const std::optional<Color> stroke = resolvePaint(element, style.stroke, style)) {
       const Paths area = guarded(element, [&] {
-        return strokeArea(subpaths, transform, style.stroke_geometry, frame_, tolerance_,
-                          vertices_);
+        const auto outliner =
+            options_.stroke_outliner == StrokeOutliner::kCurves ? curveStrokeArea : strokeArea;
+        return outliner(subpaths, transform, style.stroke_geometry, frame_, tolerance_, vertices_);
       });
       target.paint(withoutSubpixelDetail(area, frame_, kSubpixelRadius), *stroke,
                    style.stroke_opacity);

@@ -26,6 +26,9 @@ const std::vector<OptionSpec>& renderOptions() {
       {"cycles", "N", "instead: exactly N iterations (V-cycles) on the finest grid"},
       {"color", "RRGGBB", "SVG: the colour of currentColor (default 000000, black)"},
       {"lenient", "", "SVG: unsupported features become warnings and are left out"},
+      {"stroke-outliner", "clipper|curves",
+       "SVG: strokes outlined by Clipper's offsetting of the flattened path (default) or by "
+       "offset curves of the Beziers"},
       {"report", "", "print timings, multigrid levels and residuals"},
       {"help", "", "show this help"},
   };
@@ -35,7 +38,8 @@ const std::vector<OptionSpec>& renderOptions() {
 void printUsage(std::ostream& out) {
   out << "usage: vicc_glyph render INPUT.(svg|xml|png) --out OUT.png [--size N] [--dci OUT.xml]\n"
          "                        [--tolerance E | --cycles N]\n"
-         "                        [--color RRGGBB] [--lenient] [--report]\n\n"
+         "                        [--color RRGGBB] [--lenient] [--stroke-outliner clipper|curves]\n"
+         "                        [--report]\n\n"
          "Renders a diffusion curve image (Orzan XML), an SVG icon or a PNG (traced) to PNG.\n\n"
       << formatOptions(renderOptions());
 }
@@ -70,6 +74,12 @@ Color parseHexColor(const std::string& text) {
   Color color;
   for (int i = 0; i < 3; ++i) color[i] = std::stoi(hex.substr(2 * i, 2), nullptr, 16) / 255.0;
   return color;
+}
+
+StrokeOutliner parseStrokeOutliner(const std::string& text) {
+  if (text == "clipper") return StrokeOutliner::kClipper;
+  if (text == "curves") return StrokeOutliner::kCurves;
+  throw UsageError("--stroke-outliner needs clipper or curves, got '" + text + "'");
 }
 
 }  // namespace
@@ -116,6 +126,9 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
     }
     if (parsed.has("color")) svg.current_color = parseHexColor(parsed.value("color"));
     svg.lenient = parsed.has("lenient");
+    if (parsed.has("stroke-outliner")) {
+      svg.stroke_outliner = parseStrokeOutliner(parsed.value("stroke-outliner"));
+    }
     dci = parsed.value("dci");
     report = parsed.has("report");
   } catch (const UsageError& e) {

@@ -123,6 +123,11 @@ TEST_F(CliTest, BadArgumentsFailWithAMessage) {
   const ToolRun bad_size = run("render " + data("red_square.svg") + " --out x.png --size -3");
   EXPECT_EQ(bad_size.exit_code, 2);
   EXPECT_NE(bad_size.err.find("--size"), std::string::npos);
+
+  const ToolRun bad_outliner =
+      run("render " + data("red_square.svg") + " --out x.png --stroke-outliner potrace");
+  EXPECT_EQ(bad_outliner.exit_code, 2);
+  EXPECT_NE(bad_outliner.err.find("--stroke-outliner"), std::string::npos) << bad_outliner.err;
 }
 
 TEST_F(CliTest, BadFilesFailWithAMessage) {

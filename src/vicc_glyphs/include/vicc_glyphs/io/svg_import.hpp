@@ -22,12 +22,17 @@ namespace vicc_glyphs {
 /// memory in the renderer.
 constexpr double kMaxSvgPixels = 4096.0 * 4096.0;
 
+/// How strokes become filled outlines: Clipper's offsetting of the flattened path, or offset
+/// curves of the Beziers themselves (docs/import.md, bench/fidelity/README.md session 18).
+enum class StrokeOutliner { kClipper, kCurves };
+
 struct SvgImportOptions {
   Color background{1, 1, 1};     ///< colour outside every shape
   int size = 0;                  ///< 0 = keep the viewBox size, else scale to this width in pixels
   Color current_color{0, 0, 0};  ///< currentColor where no `color` property sets it
   bool lenient = false;          ///< unsupported features: warning and left out, not an error
   std::function<void(const std::string&)> warn;  ///< receives lenient warnings (may be empty)
+  StrokeOutliner stroke_outliner = StrokeOutliner::kClipper;  ///< stroke outlines (see above)
 };
 
 /// Reads an SVG file. Throws FormatError, also when the picture shows nothing.
