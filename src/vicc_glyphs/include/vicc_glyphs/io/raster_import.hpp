@@ -1,7 +1,7 @@
 #pragma once
-// Imports raster icons (PNG files of any colour type and depth): the image is quantised into a few colour
-// regions, each region's boundary is traced into cubic Beziers with potrace, and the colours on
-// both sides of every curve are sampled from the image a few pixels off the curve.
+// Imports raster icons (PNG files of any colour type and depth): the image is quantised into a
+// few colour regions, each region's boundary is traced into cubic Beziers with potrace, and the
+// colours on both sides of every curve are sampled from the image a few pixels off the curve.
 
 #include <string>
 
