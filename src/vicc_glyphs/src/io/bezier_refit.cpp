@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cubic_bezier.hpp"
+
 namespace vicc_glyphs {
 namespace io_detail {
 namespace {
@@ -10,20 +12,7 @@ namespace {
 constexpr int kMaxDepth = 24;
 constexpr int kNewtonIterations = 4;
 
-struct Cubic {
-  Point2 b[4];
-  Point2 at(double t) const {
-    const double u = 1.0 - t;
-    return u * u * u * b[0] + 3 * u * u * t * b[1] + 3 * u * t * t * b[2] + t * t * t * b[3];
-  }
-  Point2 d1(double t) const {
-    const double u = 1.0 - t;
-    return 3 * (u * u * (b[1] - b[0]) + 2 * u * t * (b[2] - b[1]) + t * t * (b[3] - b[2]));
-  }
-  Point2 d2(double t) const {
-    return 6 * ((1 - t) * (b[2] - 2 * b[1] + b[0]) + t * (b[3] - 2 * b[2] + b[1]));
-  }
-};
+using Cubic = CubicBezier;
 
 Point2 unit(const Point2& v) {
   const double n = v.norm();

@@ -152,18 +152,31 @@ Paths simplified(const Paths& paths, FillRule rule) {
   return result;
 }
 
-Paths withoutSubpixelDetail(const Paths& area, const IntegerFrame& frame, double radius) {
-  constexpr double kMiterLimit = 64.0;  // keeps all but needle-sharp corners exact
-  const double delta = radius * frame.unitsPerPixel();
+Paths withoutSpikes(const Paths& paths, double distance) {
+  Paths result;
+  ClipperLib::CleanPolygons(paths, result, distance);
+  result.erase(std::remove_if(result.begin(), result.end(),
+                              [](const Path& path) { return path.size() < 3; }),
+               result.end());
+  return result;
+}
+
+Paths offsetInSteps(const Paths& area, std::initializer_list<double> steps, double miter_limit) {
   Paths current = area;
-  for (const double step : {delta, -2.0 * delta, delta}) {
-    ClipperLib::ClipperOffset offset(kMiterLimit);
+  for (const double step : steps) {
+    ClipperLib::ClipperOffset offset(miter_limit);
     offset.AddPaths(current, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
     Paths next;
     offset.Execute(next, step);
     current = std::move(next);
   }
   return current;
+}
+
+Paths withoutSubpixelDetail(const Paths& area, const IntegerFrame& frame, double radius) {
+  constexpr double kMiterLimit = 64.0;  // keeps all but needle-sharp corners exact
+  const double delta = radius * frame.unitsPerPixel();
+  return offsetInSteps(area, {delta, -2.0 * delta, delta}, kMiterLimit);
 }
 
 Paths unite(const Paths& a, const Paths& b) { return clipperOp(ClipperLib::ctUnion, a, b); }

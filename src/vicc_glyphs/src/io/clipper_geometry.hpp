@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <clipper.hpp>
+#include <initializer_list>
 #include <vector>
 
 #include "svg_geometry.hpp"
@@ -74,12 +75,20 @@ Paths fillArea(const std::vector<Subpath>& subpaths, FillRule rule, const Intege
 /// narrower than 2 x radius disappear. Detail far below a pixel (a comb of sub-pixel teeth)
 /// cannot be told apart by the renderer's lattice and would colour pixels on the wrong side.
 Paths withoutSubpixelDetail(const Paths& area, const IntegerFrame& frame, double radius);
+/// `area` offset by each of `steps` (integer units, positive outwards) in turn, miter joins up
+/// to `miter_limit`: a closing is {d, -d}, an opening {-d, d}.
+Paths offsetInSteps(const Paths& area, std::initializer_list<double> steps, double miter_limit);
 
 Paths unite(const Paths& a, const Paths& b);
 Paths intersect(const Paths& a, const Paths& b);
 Paths subtract(const Paths& a, const Paths& b);
 /// Normalises possibly overlapping polygons with the given fill rule.
 Paths simplified(const Paths& paths, FillRule rule);
+/// `paths` without spikes (an edge run out and back: no area, but boolean operations leave
+/// them, and a curve along one renders as a glint inside its region) and without vertices
+/// within `distance` (integer units) of a neighbour or of the line through their neighbours
+/// (ClipperLib::CleanPolygons).
+Paths withoutSpikes(const Paths& paths, double distance);
 
 /// Bounding box of `paths` (all zero when empty) and whether two boxes overlap.
 IntRect boundsOf(const Paths& paths);

@@ -6,6 +6,8 @@
 #include <functional>
 #include <stdexcept>
 
+#include "cubic_bezier.hpp"
+
 namespace vicc_glyphs {
 namespace io_detail {
 namespace {
@@ -35,22 +37,8 @@ struct Tolerances {
 };
 
 // One centreline cubic; `scale` (control polygon size) sizes the "zero derivative" tests.
-struct Segment {
-  Cubic b;
+struct Segment : CubicBezier {
   double scale = 1.0;
-
-  Point2 at(double t) const {
-    const double u = 1.0 - t;
-    return u * u * u * b[0] + 3.0 * u * u * t * b[1] + 3.0 * u * t * t * b[2] + t * t * t * b[3];
-  }
-  Point2 d1(double t) const {
-    const double u = 1.0 - t;
-    return 3.0 * (u * u * (b[1] - b[0]) + 2.0 * u * t * (b[2] - b[1]) + t * t * (b[3] - b[2]));
-  }
-  Point2 d2(double t) const {
-    return 6.0 * ((1.0 - t) * (b[2] - 2.0 * b[1] + b[0]) + t * (b[3] - 2.0 * b[2] + b[1]));
-  }
-  Point2 d3() const { return 6.0 * (b[3] - 3.0 * b[2] + 3.0 * b[1] - b[0]); }
 
   // Unit tangent; where the derivative vanishes (coincident control points, a cusp) the
   // direction of the next derivative as seen from side `from` (-1 before t, +1 after).
@@ -131,7 +119,7 @@ std::array<Cubic, 2> splitCubic(const Cubic& b, double t) {
 Segment makeSegment(const Cubic& b) {
   double scale = 0.0;
   for (const Point2& p : b) scale = std::max(scale, (p - b[0]).norm());
-  return {b, scale};
+  return {{b}, scale};
 }
 
 // The subpath's cubics without zero-length ones, split at exact cusps: the direction flips
@@ -403,15 +391,7 @@ Path toPixels(const Polygon& polygon, const Affine2& user_to_pixels, const Integ
 Paths merged(const Paths& area) {
   constexpr double kUnits = 2.0;
   constexpr double kMiterLimit = 64.0;  // corners stay where they are
-  Paths current = area;
-  for (const double step : {kUnits, -kUnits}) {
-    ClipperLib::ClipperOffset offset(kMiterLimit);
-    offset.AddPaths(current, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
-    Paths next;
-    offset.Execute(next, step);
-    current = std::move(next);
-  }
-  return current;
+  return offsetInSteps(area, {kUnits, -kUnits}, kMiterLimit);
 }
 
 }  // namespace

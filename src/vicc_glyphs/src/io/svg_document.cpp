@@ -30,6 +30,9 @@ constexpr std::size_t kMaxPolygonVertices = 200000;
 constexpr double kCanvasMargin = 2.0;
 // Painted areas lose gaps and parts narrower than twice this (pixels): see withoutSubpixelDetail.
 constexpr double kSubpixelRadius = 0.25;
+// Region boundaries lose spikes and vertices within this (px) of collinearity: far below what
+// the renderer's lattice resolves.
+constexpr double kSpikeWidth = 0.01;
 
 // Containers whose content is not painted directly (or is painted only by reference).
 const std::set<std::string>& unpaintedElements() {
@@ -77,6 +80,11 @@ class SvgWalker {
     const Paths canvas = {rectangle(frame_, -kCanvasMargin, -kCanvasMargin,
                                     picture.width + kCanvasMargin, picture.height + kCanvasMargin)};
     picture.resolved = map.resolve(options_.background, canvas);
+    const double spike_width = kSpikeWidth * frame_.unitsPerPixel();
+    for (ColorRegion& region : picture.resolved.regions) {
+      region.area = withoutSpikes(region.area, spike_width);
+    }
+    picture.resolved.background.area = withoutSpikes(picture.resolved.background.area, spike_width);
     return picture;
   }
 

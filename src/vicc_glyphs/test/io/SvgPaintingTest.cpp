@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "svg_pixel_check.hpp"
@@ -90,6 +91,38 @@ TEST(SvgPainting, StrokesBecomeFilledOutlines) {
       svg("<path d='M4 12 H20' stroke='black' stroke-width='4' stroke-linecap='butt'/>");
   expectPicture(butt, 24, 96,
                 [](double x, double y) { return inRect(x, y, 4, 10, 16, 4) ? kBlack : kWhite; });
+}
+
+// Distance from (x, y) to the segment a-b.
+double segmentDistance(double x, double y, double ax, double ay, double bx, double by) {
+  const double dx = bx - ax, dy = by - ay;
+  const double t = std::clamp(((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+  return std::hypot(x - ax - t * dx, y - ay - t * dy);
+}
+
+TEST(SvgPainting, StrokesOfOnePaintMeetingLeaveNoGlint) {
+  // Feather's "tv" (MIT): a rounded rectangle's outline and a V on its top edge. Their union
+  // once kept a zero-area spike in its boundary, which became a curve rendering a light streak
+  // inside the black stroke where the V meets the edge.
+  const std::string tv =
+      svg("<g fill='none' stroke='#000' stroke-width='2' stroke-linecap='round' "
+          "stroke-linejoin='round'><rect x='2' y='7' width='20' height='15' rx='2' ry='2'/>"
+          "<polyline points='17 2 12 7 7 2'/></g>");
+  const auto expected = [](double x, double y) {
+    // The rounded rectangle is the inner one [4, 20] x [9, 20] grown by 2.
+    const double inner =
+        std::hypot(std::max({4.0 - x, 0.0, x - 20.0}), std::max({9.0 - y, 0.0, y - 20.0}));
+    const bool frame = std::abs(inner - 2.0) <= 1.0;
+    const bool vee =
+        std::min(segmentDistance(x, y, 17, 2, 12, 7), segmentDistance(x, y, 12, 7, 7, 2)) <= 1.0;
+    return frame || vee ? kBlack : kWhite;
+  };
+  // Tolerance 0.15, not 0.03: the refit rounds the two concave corners where the V meets the
+  // edge within a pixel (two pixels at 0.12). The streak was 436 pixels, up to 0.86.
+  const test::PixelComparison c =
+      test::comparePixels(test::renderSvgText(tv, 256), 24, expected, 0.15);
+  EXPECT_GT(c.checked, 256 * 256 / 2);
+  EXPECT_EQ(c.wrong, 0) << "worst difference " << c.worst;
 }
 
 TEST(SvgPainting, DashesSplitTheStroke) {
