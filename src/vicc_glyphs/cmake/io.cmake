@@ -77,6 +77,7 @@ if(CATKIN_ENABLE_TESTING)
     test/io/UsvgSceneTest.cpp
     test/io/PngCodecTest.cpp
     test/io/CurveStrokeTest.cpp
+    test/io/ClipperGeometryTest.cpp
   )
   target_include_directories(vicc_glyphs_io_test SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS}
     ${VICC_GLYPHS_POLYCLIPPING_INCLUDE_DIRS})

@@ -152,12 +152,45 @@ Paths simplified(const Paths& paths, FillRule rule) {
   return result;
 }
 
-Paths withoutSpikes(const Paths& paths, double distance) {
+namespace {
+
+// Whether the boundary runs out to `b` and back (coming from a, going on to c): it turns back
+// (by more than 90 degrees) and comes back to within `width` of a or b lies within `width` of
+// the line through a and c; or an edge has no length. Symmetric in a and c, so both directions of a shared boundary agree.
+bool isSpike(const IntPoint& a, const IntPoint& b, const IntPoint& c, double width) {
+  const double ux = static_cast<double>(b.X - a.X), uy = static_cast<double>(b.Y - a.Y);
+  const double vx = static_cast<double>(c.X - b.X), vy = static_cast<double>(c.Y - b.Y);
+  if ((ux == 0.0 && uy == 0.0) || (vx == 0.0 && vy == 0.0)) return true;
+  if (ux * vx + uy * vy >= 0.0) return false;
+  const double wx = ux + vx, wy = uy + vy;  // c - a
+  const double base = std::hypot(wx, wy);
+  // Back to within `width` of where it left, or back along the line it came.
+  return base <= width || std::abs(wx * uy - wy * ux) <= width * base;
+}
+
+Path withoutSpikes(Path path, double width) {
+  bool removed = true;
+  while (removed && path.size() >= 3) {
+    removed = false;
+    for (std::size_t i = 0; i < path.size() && path.size() >= 3; ++i) {
+      const std::size_t n = path.size();
+      if (isSpike(path[(i + n - 1) % n], path[i], path[(i + 1) % n], width)) {
+        path.erase(path.begin() + static_cast<long>(i));
+        removed = true;
+      }
+    }
+  }
+  return path;
+}
+
+}  // namespace
+
+Paths withoutSpikes(const Paths& paths, double width) {
   Paths result;
-  ClipperLib::CleanPolygons(paths, result, distance);
-  result.erase(std::remove_if(result.begin(), result.end(),
-                              [](const Path& path) { return path.size() < 3; }),
-               result.end());
+  for (const Path& path : paths) {
+    Path clean = withoutSpikes(path, width);
+    if (clean.size() >= 3) result.push_back(std::move(clean));
+  }
   return result;
 }
 

@@ -84,11 +84,12 @@ Paths intersect(const Paths& a, const Paths& b);
 Paths subtract(const Paths& a, const Paths& b);
 /// Normalises possibly overlapping polygons with the given fill rule.
 Paths simplified(const Paths& paths, FillRule rule);
-/// `paths` without spikes (an edge run out and back: no area, but boolean operations leave
-/// them, and a curve along one renders as a glint inside its region) and without vertices
-/// within `distance` (integer units) of a neighbour or of the line through their neighbours
-/// (ClipperLib::CleanPolygons).
-Paths withoutSpikes(const Paths& paths, double distance);
+/// `paths` without spikes: vertices where the boundary runs out and back along one line (the tip
+/// within `width` integer units of the line through its neighbours) and repeated vertices.
+/// Boolean operations leave such spikes, and a curve along one renders as a glint inside its
+/// region. The test is symmetric, so a boundary shared by two regions loses the same vertices
+/// in either direction; other vertices stay.
+Paths withoutSpikes(const Paths& paths, double width);
 
 /// Bounding box of `paths` (all zero when empty) and whether two boxes overlap.
 IntRect boundsOf(const Paths& paths);

@@ -30,9 +30,8 @@ constexpr std::size_t kMaxPolygonVertices = 200000;
 constexpr double kCanvasMargin = 2.0;
 // Painted areas lose gaps and parts narrower than twice this (pixels): see withoutSubpixelDetail.
 constexpr double kSubpixelRadius = 0.25;
-// Region boundaries lose spikes and vertices within this (px) of collinearity: far below what
-// the renderer's lattice resolves.
-constexpr double kSpikeWidth = 0.01;
+// Region boundaries lose spikes (out and back along one line) up to this wide (px).
+constexpr double kSpikeWidth = 0.001;
 
 // Containers whose content is not painted directly (or is painted only by reference).
 const std::set<std::string>& unpaintedElements() {
