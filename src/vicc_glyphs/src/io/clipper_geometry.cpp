@@ -154,10 +154,10 @@ Paths simplified(const Paths& paths, FillRule rule) {
 
 namespace {
 
-// Whether the boundary runs out to `b` and back (coming from a, going on to c): it turns back
-// (by more than 90 degrees) and comes back to within `width` of a or b lies within `width` of
-// the line through a and c; or an edge has no length. Symmetric in a and c, so both directions of a
-// shared boundary agree.
+// Whether the boundary runs out to `b` and back (coming from a, going on to c): it turns back by
+// more than 90 degrees and either returns to within `width` of a or b lies within `width` of
+// the line through a and c; or an edge has no length. Symmetric in a and c, so both directions
+// of a boundary that two regions share agree.
 bool isSpike(const IntPoint& a, const IntPoint& b, const IntPoint& c, double width) {
   const double ux = static_cast<double>(b.X - a.X), uy = static_cast<double>(b.Y - a.Y);
   const double vx = static_cast<double>(c.X - b.X), vy = static_cast<double>(c.Y - b.Y);
