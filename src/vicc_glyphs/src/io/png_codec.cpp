@@ -76,11 +76,8 @@ std::vector<std::uint8_t> encodePng8(const cv::Mat& image, ChannelOrder order) {
   ImageGuard guard;
   const cv::Mat pixels = checkedRgb8(image, order, guard.image);
   const png_int_32 stride = static_cast<png_int_32>(pixels.step[0]);
-  png_alloc_size_t size = 0;
-  // The first call only measures (a whole compression run); the second writes.
-  if (!png_image_write_to_memory(&guard.image, nullptr, &size, 0, pixels.data, stride, nullptr)) {
-    throw std::runtime_error("cannot encode PNG: " + reasonOf(guard.image, "encoder failed"));
-  }
+  // Room for the largest PNG the image can give, so that it is compressed once.
+  png_alloc_size_t size = PNG_IMAGE_PNG_SIZE_MAX(guard.image);
   std::vector<std::uint8_t> bytes(size);
   if (!png_image_write_to_memory(&guard.image, bytes.data(), &size, 0, pixels.data, stride,
                                  nullptr)) {
