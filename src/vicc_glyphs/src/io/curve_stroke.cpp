@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "cubic_bezier.hpp"
+#include "svg_arc.hpp"
 
 namespace vicc_glyphs {
 namespace io_detail {
@@ -288,16 +289,12 @@ void sideOfSegment(const Segment& s, const std::vector<double>& splits, double o
 // (signed), as cubics of at most 90 degrees, flattened.
 void appendArc(const Point2& centre, const Point2& from, double sweep, const Tolerances& tol,
                VertexBudget& budget, Polygon& out) {
-  const int n = std::max(1, static_cast<int>(std::ceil(std::abs(sweep) / (0.5 * kPi) - 1e-9)));
-  const double step = sweep / n, k = 4.0 / 3.0 * std::tan(step / 4.0);
+  const double radius = from.norm();
   Contour chain = {centre + from};
-  Point2 r = from;
-  for (int i = 1; i <= n; ++i) {
-    const Point2 next = rotated(from, step * i);
-    chain.insert(chain.end(), {centre + r + k * leftNormal(r), centre + next - k * leftNormal(next),
-                               centre + next});
-    r = next;
-  }
+  const std::vector<Point2> cubics =
+      centredArcToCubics(centre, radius, radius, 0.0, std::atan2(from.y(), from.x()), sweep,
+                         centre + from, centre + rotated(from, sweep));
+  chain.insert(chain.end(), cubics.begin(), cubics.end());
   flattenChain(chain, tol.flatten, budget, out);
 }
 

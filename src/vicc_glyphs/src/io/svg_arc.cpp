@@ -47,6 +47,13 @@ std::vector<Point2> arcToCubics(const Point2& from, double rx, double ry, double
   if (!sweep && delta > 0) delta -= 2.0 * M_PI;
   if (sweep && delta < 0) delta += 2.0 * M_PI;
 
+  return centredArcToCubics(centre, rx, ry, phi, theta, delta, from, to);
+}
+
+std::vector<Point2> centredArcToCubics(const Point2& centre, double rx, double ry,
+                                       double rotation_radians, double theta, double delta,
+                                       const Point2& from, const Point2& to) {
+  const Eigen::Rotation2Dd rotation(rotation_radians);
   // Each piece spans at most 90 degrees; its handles have length k = 4/3 tan(piece/4).
   const int pieces = std::max(1, static_cast<int>(std::ceil(std::abs(delta) / (M_PI / 2) - 1e-9)));
   const double step = delta / pieces;

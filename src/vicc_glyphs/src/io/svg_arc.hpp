@@ -14,5 +14,12 @@ namespace io_detail {
 std::vector<Point2> arcToCubics(const Point2& from, double rx, double ry, double x_axis_degrees,
                                 bool large_arc, bool sweep, const Point2& to);
 
+/// The arc of the ellipse with radii rx, ry (its x axis turned by `rotation_radians`) around
+/// `centre` from angle `theta` turning by `delta` radians, as cubics of at most 90 degrees
+/// (c1, c2, end per cubic); the first starts at `from`, the last ends exactly at `to`.
+std::vector<Point2> centredArcToCubics(const Point2& centre, double rx, double ry,
+                                       double rotation_radians, double theta, double delta,
+                                       const Point2& from, const Point2& to);
+
 }  // namespace io_detail
 }  // namespace vicc_glyphs
