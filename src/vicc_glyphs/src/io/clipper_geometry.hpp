@@ -82,7 +82,8 @@ Paths offsetInSteps(const Paths& area, std::initializer_list<double> steps, doub
 Paths unite(const Paths& a, const Paths& b);
 Paths intersect(const Paths& a, const Paths& b);
 Paths subtract(const Paths& a, const Paths& b);
-/// Normalises possibly overlapping polygons with the given fill rule.
+/// Normalises possibly overlapping polygons with the given fill rule into strictly simple ones
+/// (Clipper's SimplifyPolygons: no self-intersections, touching vertices or coincident edges).
 Paths simplified(const Paths& paths, FillRule rule);
 /// `paths` without spikes: vertices where the boundary runs out and back along one line (the tip
 /// within `width` integer units of the line through its neighbours) and repeated vertices.

@@ -79,15 +79,23 @@ class SvgWalker {
     const Paths canvas = {rectangle(frame_, -kCanvasMargin, -kCanvasMargin,
                                     picture.width + kCanvasMargin, picture.height + kCanvasMargin)};
     picture.resolved = map.resolve(options_.background, canvas);
-    const double spike_width = kSpikeWidth * frame_.unitsPerPixel();
-    for (ColorRegion& region : picture.resolved.regions) {
-      region.area = withoutSpikes(region.area, spike_width);
-    }
-    picture.resolved.background.area = withoutSpikes(picture.resolved.background.area, spike_width);
+    for (ColorRegion& region : picture.resolved.regions) region.area = tidied(region.area);
+    picture.resolved.background.area = tidied(picture.resolved.background.area);
     return picture;
   }
 
  private:
+  // A resolved area's boundary as the curves need it. Strictly simple: where shapes of one
+  // colour touch (a line tangent to a ring's inner edge), Clipper's union can join a hole to
+  // the outer boundary by a slit of two coincident edges through the region; a curve along it
+  // has the region's colour on both sides, but the side colour is sampled at a point that lies
+  // on the slit's other edge and reads as the background (a streak of dots, Feather `chrome`).
+  // Then without spikes (see withoutSpikes).
+  Paths tidied(const Paths& area) const {
+    return withoutSpikes(simplified(area, FillRule::kNonZero),
+                         kSpikeWidth * frame_.unitsPerPixel());
+  }
+
   std::string place(const XMLElement& e) const {
     return "<" + std::string(e.Name()) + "> line " + std::to_string(e.GetLineNum());
   }

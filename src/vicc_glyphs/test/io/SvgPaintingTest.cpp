@@ -125,6 +125,26 @@ TEST(SvgPainting, StrokesOfOnePaintMeetingLeaveNoGlint) {
   EXPECT_EQ(c.wrong, 0) << "worst difference " << c.worst;
 }
 
+TEST(SvgPainting, ALineTangentToARingsHoleLeavesNoStreak) {
+  // From Feather's "chrome" (MIT): a ring and a line whose stroke edge is tangent to the ring's
+  // inner edge. Clipper's union once joined the hole to the outer boundary by a slit of two
+  // coincident edges along the line's edge through the ring; its curve sampled the background
+  // as the colour across and rendered a streak of white dots in the black ring.
+  const std::string ring_and_line =
+      svg("<g fill='none' stroke='#000' stroke-width='2' stroke-linecap='round'>"
+          "<circle cx='12' cy='12' r='4'/><line x1='10.88' y1='21.94' x2='15.46' y2='14'/></g>");
+  const auto expected = [](double x, double y) {
+    const bool ring = std::abs(std::hypot(x - 12.0, y - 12.0) - 4.0) <= 1.0;
+    const bool line = segmentDistance(x, y, 10.88, 21.94, 15.46, 14) <= 1.0;
+    return ring || line ? kBlack : kWhite;
+  };
+  // With the slit: 828 wrong pixels, up to 1.0.
+  const test::PixelComparison c =
+      test::comparePixels(test::renderSvgText(ring_and_line, 256), 24, expected, 0.15);
+  EXPECT_GT(c.checked, 256 * 256 / 2);
+  EXPECT_EQ(c.wrong, 0) << "worst difference " << c.worst;
+}
+
 TEST(SvgPainting, DashesSplitTheStroke) {
   const std::string dashed =
       svg("<path d='M2 12 H22' stroke='black' stroke-width='2' stroke-dasharray='4 2'/>");
