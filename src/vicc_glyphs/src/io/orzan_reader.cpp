@@ -23,20 +23,16 @@ class OrzanReader {
   explicit OrzanReader(std::string source) : source_(std::move(source)) {}
 
   DiffusionCurveImage read(const std::string& text) {
-    io_detail::rejectTooManyControlPoints(text, source_);
     tinyxml2::XMLDocument document;
-    io_detail::parseXmlDocument(document, text, source_);
-    const XMLElement* root = document.RootElement();
-    if (!root || std::string(root->Name()) != "curve_set") {
-      throw FormatError(source_, "root", "expected a <curve_set> root element");
-    }
+    const XMLElement& root = io_detail::parseCurveFileRoot(document, text, source_, "curve_set",
+                                                           "a <curve_set> root element");
     DiffusionCurveImage image;
-    io_detail::requireImageSize(*root, source_, "curve_set", image.width, image.height);
-    for (const XMLElement* curve = root->FirstChildElement("curve"); curve;
+    io_detail::requireImageSize(root, source_, "curve_set", image.width, image.height);
+    for (const XMLElement* curve = root.FirstChildElement("curve"); curve;
          curve = curve->NextSiblingElement("curve")) {
       image.curves.push_back(readCurve(*curve, "curve " + std::to_string(image.curves.size())));
     }
-    checkDeclaredCount(*root, "nb_curves", image.curves.size(), "curve_set");
+    checkDeclaredCount(root, "nb_curves", image.curves.size(), "curve_set");
     const std::string problem = validate(image);
     if (!problem.empty()) throw FormatError(source_, "", problem);
     return image;
@@ -55,16 +51,10 @@ class OrzanReader {
     }
   }
 
-  const XMLElement& requireChild(const XMLElement& parent, const char* name,
-                                 const std::string& place) const {
-    const XMLElement* child = parent.FirstChildElement(name);
-    if (!child) throw FormatError(source_, place, std::string("missing <") + name + ">");
-    return *child;
-  }
-
   DiffusionCurve readCurve(const XMLElement& element, const std::string& place) {
     DiffusionCurve curve;
-    readControlPoints(requireChild(element, "control_points_set", place), place, curve);
+    readControlPoints(io_detail::requireChild(element, "control_points_set", source_, place), place,
+                      curve);
     checkDeclaredCount(element, "nb_control_points", curve.control_points.size(), place);
     const int segments = curve.segmentCount();
     if (segments == 0) {
@@ -78,8 +68,10 @@ class OrzanReader {
     if (zero_length) throw FormatError(source_, place, "zero-length curve (all points equal)");
 
     // The file's left side is our left side (see orzan_conventions.hpp).
-    const XMLElement& file_left = requireChild(element, "left_colors_set", place);
-    const XMLElement& file_right = requireChild(element, "right_colors_set", place);
+    const XMLElement& file_left =
+        io_detail::requireChild(element, "left_colors_set", source_, place);
+    const XMLElement& file_right =
+        io_detail::requireChild(element, "right_colors_set", source_, place);
     curve.left_colors = readColors(file_left, "left_color", segments, place);
     curve.right_colors = readColors(file_right, "right_color", segments, place);
     curve.left_emits = !isBarrier(file_left);

@@ -32,18 +32,14 @@ class UsvgSceneReader {
   explicit UsvgSceneReader(std::string source) : source_(std::move(source)) {}
 
   DiffusionCurveImage read(const std::string& text) {
-    io_detail::rejectTooManyControlPoints(text, source_);
     tinyxml2::XMLDocument document;
-    io_detail::parseXmlDocument(document, text, source_);
-    const XMLElement* root = document.RootElement();
-    if (!root || std::string(root->Name()) != "scene") {
-      throw FormatError(source_, "root", "expected a <scene> root element (SceneXML)");
-    }
+    const XMLElement& root = io_detail::parseCurveFileRoot(document, text, source_, "scene",
+                                                           "a <scene> root element (SceneXML)");
     // <poisson_curve_set> and <mesh_set> have no counterpart in our representation; they are
     // skipped (documented in usvg_scene_xml.hpp), only the diffusion curves are read.
     DiffusionCurveImage image;
-    io_detail::requireImageSize(*root, source_, "scene", image.width, image.height);
-    if (const XMLElement* set = root->FirstChildElement("curve_set")) {
+    io_detail::requireImageSize(root, source_, "scene", image.width, image.height);
+    if (const XMLElement* set = root.FirstChildElement("curve_set")) {
       for (const XMLElement* curve : children(*set, "curve", *set, "nb_curves", "curve_set")) {
         image.curves.push_back(readCurve(*curve, "curve " + std::to_string(image.curves.size())));
       }
@@ -76,16 +72,10 @@ class UsvgSceneReader {
     return found;
   }
 
-  const XMLElement& requireChild(const XMLElement& parent, const char* name,
-                                 const std::string& place) const {
-    const XMLElement* child = parent.FirstChildElement(name);
-    if (!child) throw FormatError(source_, place, std::string("missing <") + name + ">");
-    return *child;
-  }
-
   DiffusionCurve readCurve(const XMLElement& element, const std::string& place) {
     DiffusionCurve curve;
-    readControlPoints(requireChild(element, "control_points_set", place), element, place, curve);
+    readControlPoints(io_detail::requireChild(element, "control_points_set", source_, place),
+                      element, place, curve);
     const int segments = curve.segmentCount();
     if (segments == 0) {
       throw FormatError(source_, place,
@@ -96,8 +86,10 @@ class UsvgSceneReader {
         std::all_of(curve.control_points.begin(), curve.control_points.end(),
                     [&](const Point2& p) { return p == curve.control_points.front(); });
     if (zero_length) throw FormatError(source_, place, "zero-length curve (all points equal)");
-    const XMLElement& file_left = requireChild(element, "left_colors_set", place);
-    const XMLElement& file_right = requireChild(element, "right_colors_set", place);
+    const XMLElement& file_left =
+        io_detail::requireChild(element, "left_colors_set", source_, place);
+    const XMLElement& file_right =
+        io_detail::requireChild(element, "right_colors_set", source_, place);
     const std::vector<RawColor> left =
         readColors(file_left, "left_color", element, "nb_left_colors", place);
     const std::vector<RawColor> right =

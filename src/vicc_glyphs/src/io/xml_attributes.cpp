@@ -72,6 +72,25 @@ void rejectTooManyControlPoints(const std::string& text, const std::string& sour
   }
 }
 
+const tinyxml2::XMLElement& parseCurveFileRoot(tinyxml2::XMLDocument& document,
+                                               const std::string& text, const std::string& source,
+                                               const char* root_name, const std::string& expected) {
+  rejectTooManyControlPoints(text, source);
+  parseXmlDocument(document, text, source);
+  const tinyxml2::XMLElement* root = document.RootElement();
+  if (!root || std::string(root->Name()) != root_name) {
+    throw FormatError(source, "root", "expected " + expected);
+  }
+  return *root;
+}
+
+const tinyxml2::XMLElement& requireChild(const tinyxml2::XMLElement& parent, const char* name,
+                                         const std::string& source, const std::string& place) {
+  const tinyxml2::XMLElement* child = parent.FirstChildElement(name);
+  if (!child) throw FormatError(source, place, std::string("missing <") + name + ">");
+  return *child;
+}
+
 void requireImageSize(const tinyxml2::XMLElement& root, const std::string& source,
                       const std::string& place, int& width, int& height) {
   constexpr int kMaxImageSide = 100000;

@@ -29,6 +29,17 @@ std::string tooManyControlPointsMessage();
 /// before a DOM is built for a huge file.
 void rejectTooManyControlPoints(const std::string& text, const std::string& source);
 
+/// The root element of a curve file: the control-point limit checked (rejectTooManyControlPoints),
+/// `text` parsed into `document`; throws FormatError(source, "root", "expected " + `expected`)
+/// unless the root element is named `root_name`.
+const tinyxml2::XMLElement& parseCurveFileRoot(tinyxml2::XMLDocument& document,
+                                               const std::string& text, const std::string& source,
+                                               const char* root_name, const std::string& expected);
+
+/// The first child element `name` of `parent`; throws FormatError(source, place, "missing <name>").
+const tinyxml2::XMLElement& requireChild(const tinyxml2::XMLElement& parent, const char* name,
+                                         const std::string& source, const std::string& place);
+
 /// image_width and image_height of a curve file's root element, each within 1..100000.
 void requireImageSize(const tinyxml2::XMLElement& root, const std::string& source,
                       const std::string& place, int& width, int& height);
