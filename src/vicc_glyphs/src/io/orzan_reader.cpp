@@ -56,16 +56,7 @@ class OrzanReader {
     readControlPoints(io_detail::requireChild(element, "control_points_set", source_, place), place,
                       curve);
     checkDeclaredCount(element, "nb_control_points", curve.control_points.size(), place);
-    const int segments = curve.segmentCount();
-    if (segments == 0) {
-      throw FormatError(source_, place,
-                        std::to_string(curve.control_points.size()) +
-                            " control points; a curve needs 3K+1 with K >= 1");
-    }
-    const bool zero_length =
-        std::all_of(curve.control_points.begin(), curve.control_points.end(),
-                    [&](const Point2& p) { return p == curve.control_points.front(); });
-    if (zero_length) throw FormatError(source_, place, "zero-length curve (all points equal)");
+    const int segments = io_detail::requireDrawableSegments(curve, source_, place);
 
     // The file's left side is our left side (see orzan_conventions.hpp).
     const XMLElement& file_left =

@@ -76,16 +76,7 @@ class UsvgSceneReader {
     DiffusionCurve curve;
     readControlPoints(io_detail::requireChild(element, "control_points_set", source_, place),
                       element, place, curve);
-    const int segments = curve.segmentCount();
-    if (segments == 0) {
-      throw FormatError(source_, place,
-                        std::to_string(curve.control_points.size()) +
-                            " control points; a curve needs 3K+1 with K >= 1");
-    }
-    const bool zero_length =
-        std::all_of(curve.control_points.begin(), curve.control_points.end(),
-                    [&](const Point2& p) { return p == curve.control_points.front(); });
-    if (zero_length) throw FormatError(source_, place, "zero-length curve (all points equal)");
+    const int segments = io_detail::requireDrawableSegments(curve, source_, place);
     const XMLElement& file_left =
         io_detail::requireChild(element, "left_colors_set", source_, place);
     const XMLElement& file_right =

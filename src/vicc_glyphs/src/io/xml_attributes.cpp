@@ -1,5 +1,6 @@
 #include "xml_attributes.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "vicc_glyphs/io/format_error.hpp"
@@ -89,6 +90,21 @@ const tinyxml2::XMLElement& requireChild(const tinyxml2::XMLElement& parent, con
   const tinyxml2::XMLElement* child = parent.FirstChildElement(name);
   if (!child) throw FormatError(source, place, std::string("missing <") + name + ">");
   return *child;
+}
+
+int requireDrawableSegments(const DiffusionCurve& curve, const std::string& source,
+                            const std::string& place) {
+  const int segments = curve.segmentCount();
+  if (segments == 0) {
+    throw FormatError(source, place,
+                      std::to_string(curve.control_points.size()) +
+                          " control points; a curve needs 3K+1 with K >= 1");
+  }
+  const bool zero_length =
+      std::all_of(curve.control_points.begin(), curve.control_points.end(),
+                  [&](const Point2& p) { return p == curve.control_points.front(); });
+  if (zero_length) throw FormatError(source, place, "zero-length curve (all points equal)");
+  return segments;
 }
 
 void requireImageSize(const tinyxml2::XMLElement& root, const std::string& source,

@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include "vicc_glyphs/dci/diffusion_curve.hpp"
+
 namespace vicc_glyphs {
 namespace io_detail {
 
@@ -39,6 +41,11 @@ const tinyxml2::XMLElement& parseCurveFileRoot(tinyxml2::XMLDocument& document,
 /// The first child element `name` of `parent`; throws FormatError(source, place, "missing <name>").
 const tinyxml2::XMLElement& requireChild(const tinyxml2::XMLElement& parent, const char* name,
                                          const std::string& source, const std::string& place);
+
+/// The Bezier segment count of a curve just read; throws FormatError(source, place, ...) unless
+/// it has 3K+1 control points (K >= 1) that are not all equal.
+int requireDrawableSegments(const DiffusionCurve& curve, const std::string& source,
+                            const std::string& place);
 
 /// image_width and image_height of a curve file's root element, each within 1..100000.
 void requireImageSize(const tinyxml2::XMLElement& root, const std::string& source,
