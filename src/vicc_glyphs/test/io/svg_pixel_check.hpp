@@ -58,8 +58,10 @@ inline PixelComparison comparePixels(const cv::Mat& image, double view_size,
 
 /// Expects every wholly covered pixel to match (a minimal SVG has no excuse for a wrong one).
 inline void expectPicture(const std::string& svg, double view_size, int pixels,
-                          const ExpectedPicture& expected, const SvgImportOptions& options = {}) {
-  const PixelComparison c = comparePixels(renderSvgText(svg, pixels, options), view_size, expected);
+                          const ExpectedPicture& expected, const SvgImportOptions& options = {},
+                          double tolerance = 0.03) {
+  const PixelComparison c =
+      comparePixels(renderSvgText(svg, pixels, options), view_size, expected, tolerance);
   EXPECT_GT(c.checked, pixels * pixels / 2) << svg;
   EXPECT_EQ(c.wrong, 0) << "worst difference " << c.worst << " in " << svg;
 }
