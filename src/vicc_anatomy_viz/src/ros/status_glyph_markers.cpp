@@ -15,6 +15,7 @@
 #include "vicc_anatomy_viz/ros/patient_status_server_settings.hpp"
 #include "vicc_anatomy_viz/status_glyph/glyph_billboard.hpp"
 #include "vicc_common/ros_parameters.hpp"
+#include "vicc_common/ros_service_call.hpp"
 
 namespace vicc_anatomy_viz::ros_adapter {
 
@@ -214,7 +215,8 @@ visualization_msgs::MarkerArray StatusGlyphMarkers::markersFor(const GlyphReadin
                              static_cast<double>(reading.level)};
     render.request.size = settings_.resolution_px;
     try {
-      if (!render_client_.call(render)) throw std::runtime_error("glyph server not reachable");
+      if (!vicc_common::callRepeatableService(render_client_, render))
+        throw std::runtime_error("glyph server not reachable");
       if (!render.response.success) throw std::runtime_error(render.response.message);
       array.markers.push_back(glyphMarker(render.response, settings_, stamp));
       glyph_height = settings_.width_m * render.response.image.height /

@@ -7,6 +7,8 @@
 #include <vicc_msgs/ListPatients.h>
 #include <vicc_msgs/SelectPatient.h>
 
+#include "vicc_common/ros_service_call.hpp"
+
 namespace vicc_anatomy_viz::rviz_plugin {
 
 panel::ShownStatus toShownStatus(const vicc_msgs::EncodedStatus& msg) {
@@ -56,7 +58,8 @@ void PatientServerClient::connectTo(const QString& server) {
 template <typename Service>
 bool PatientServerClient::call(const char* name, Service& srv) {
   const std::string full_name = service(name);
-  if (ros::service::call(full_name, srv)) {
+  // Every request of the panel may be repeated (queries and selections).
+  if (vicc_common::callRepeatableService(full_name, srv)) {
     Q_EMIT reachabilityChanged(true, QString());
     return true;
   }

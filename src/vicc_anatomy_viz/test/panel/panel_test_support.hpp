@@ -11,6 +11,8 @@
 #include <ros/ros.h>
 #include <vicc_msgs/EncodedStatus.h>
 
+#include "vicc_common/ros_service_call.hpp"
+
 namespace vicc_panel_test {
 
 inline const std::string kServer = "/patient_status_server/";
@@ -22,7 +24,8 @@ typename Service::Response call(const std::string& name, typename Service::Reque
   Service service;
   service.request = request;
   EXPECT_TRUE(ros::service::waitForService(kServer + name, ros::Duration(20.0))) << name;
-  EXPECT_TRUE(ros::service::call(kServer + name, service)) << name;
+  // The panel tests' requests are queries and selections: repeatable (ros_service_call.hpp).
+  EXPECT_TRUE(vicc_common::callRepeatableService(kServer + name, service)) << name;
   return service.response;
 }
 

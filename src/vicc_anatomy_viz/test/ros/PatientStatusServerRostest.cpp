@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <functional>
 #include <optional>
+#include <type_traits>
 
 #include <ros/ros.h>
 #include <rosgraph_msgs/Log.h>
@@ -20,6 +21,7 @@
 
 #include "vicc_anatomy_viz/record_json.hpp"
 #include "vicc_anatomy_viz/time_format.hpp"
+#include "vicc_common/ros_service_call.hpp"
 
 namespace {
 
@@ -56,7 +58,12 @@ typename Service::Response call(const std::string& name, typename Service::Reque
   Service service;
   service.request = request;
   EXPECT_TRUE(ros::service::waitForService(kNs + name, ros::Duration(20.0))) << name;
-  EXPECT_TRUE(ros::service::call(kNs + name, service)) << name;
+  // A record must reach the server once (a repeat after a lost response would be rejected as
+  // already recorded); queries and selections may be repeated (ros_service_call.hpp).
+  constexpr bool kRecords = std::is_same_v<Service, vicc_msgs::RecordExamination>;
+  EXPECT_TRUE(kRecords ? ros::service::call(kNs + name, service)
+                       : vicc_common::callRepeatableService(kNs + name, service))
+      << name;
   return service.response;
 }
 

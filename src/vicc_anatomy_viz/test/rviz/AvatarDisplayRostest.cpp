@@ -23,6 +23,7 @@
 #include "sample_patient_database.hpp"
 #include "vicc_anatomy_viz/rviz/avatar_display.hpp"
 #include "vicc_avatar_snapshot_renderer.hpp"
+#include "vicc_common/ros_service_call.hpp"
 
 namespace {
 
@@ -97,7 +98,8 @@ class AvatarDisplayRostest : public ::testing::Test {
     select.request.date = date;
     select.request.hidden_categories = hidden;
     EXPECT_TRUE(ros::service::waitForService("/patient_status_server/select_patient", 20000));
-    EXPECT_TRUE(ros::service::call("/patient_status_server/select_patient", select));
+    EXPECT_TRUE(
+        vicc_common::callRepeatableService("/patient_status_server/select_patient", select));
     EXPECT_TRUE(renderer_->waitForStatus(drawn, kWaitS)) << "no status drawn for " << date;
     EXPECT_TRUE(renderer_->setView(view));
     return renderer_->grab();

@@ -30,6 +30,7 @@
 #include "vicc_anatomy_viz/avatar/avatar_model.hpp"
 #include "vicc_anatomy_viz/rviz/avatar_display.hpp"
 #include "vicc_avatar_snapshot_renderer.hpp"
+#include "vicc_common/ros_service_call.hpp"
 
 namespace {
 
@@ -84,7 +85,7 @@ QColor brainColour(double pressure, double level) {
   render.request.values = {pressure, level};
   render.request.size = 96;
   EXPECT_TRUE(ros::service::waitForService("/glyph_server/render", 20000));
-  EXPECT_TRUE(ros::service::call("/glyph_server/render", render));
+  EXPECT_TRUE(vicc_common::callRepeatableService("/glyph_server/render", render));
   EXPECT_TRUE(render.response.success) << render.response.message;
   std::map<QRgb, int> counts;
   const auto& data = render.response.image.data;
@@ -128,7 +129,8 @@ class StatusGlyphRostest : public ::testing::Test {
     select.request.patient_id = "SDH-046";
     select.request.date = date;
     EXPECT_TRUE(ros::service::waitForService("/patient_status_server/select_patient", 20000));
-    EXPECT_TRUE(ros::service::call("/patient_status_server/select_patient", select));
+    EXPECT_TRUE(
+        vicc_common::callRepeatableService("/patient_status_server/select_patient", select));
     EXPECT_TRUE(renderer_->waitForStatus(drawn, kWaitS)) << "no status drawn for " << date;
     auto arrived = [&] { return caption() && caption()->text.find(taken_at) != std::string::npos; };
     const ros::WallTime until = ros::WallTime::now() + ros::WallDuration(kWaitS);

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "vicc_common/ros_parameters.hpp"
+#include "vicc_common/ros_service_call.hpp"
 #include "vicc_glyphs/ros/glyph_server.hpp"
 
 namespace {
@@ -25,7 +26,7 @@ vicc_msgs::RenderGlyph request(const std::string& design, std::vector<std::strin
 }
 
 bool callRender(vicc_msgs::RenderGlyph& call) {
-  return ros::service::call("/glyph_server/render", call);
+  return vicc_common::callRepeatableService("/glyph_server/render", call);
 }
 
 }  // namespace
