@@ -5,11 +5,13 @@
 #include <ros/ros.h>
 #include <roscpp/Empty.h>
 
+#include <atomic>
+
 #include "vicc_common/ros_service_call.hpp"
 
 namespace {
 
-// Fails the first `failures` calls, then answers.
+// Fails the first `failures` calls, then answers (in the spinner's thread: the count is atomic).
 class FlakyService {
  public:
   FlakyService(ros::NodeHandle& nh, const std::string& name, int failures)
@@ -20,7 +22,7 @@ class FlakyService {
   bool answer(roscpp::Empty::Request&, roscpp::Empty::Response&) { return ++calls_ > failures_; }
 
   int failures_;
-  int calls_ = 0;
+  std::atomic<int> calls_{0};
   ros::ServiceServer server_;
 };
 
