@@ -91,27 +91,53 @@ struct Placement {
   int corner = -1;
 };
 
-// The icon corner knot point `i` moves onto, or -1: a corner at the same place or, for the
+bool isStripWaveform(Waveform waveform) {
+  return waveform == Waveform::Triangle || waveform == Waveform::Sawtooth;
+}
+
+// The icon corner that knot point `i` goes to, or -1: a corner at the same place or, for the
 // waveforms whose knot points are free to move (not the rectangle's dense plateau and flank
 // points), one inside whose angle the offset of the knot point (by `amplitude`) would fall past
-// the bisector, within kMaxMoveToCorner of the way to the neighbouring knot points. The first
-// and the last knot point stay at the closing point.
-int cornerOfPeak(const ContourFrame& frame, std::size_t i, double amplitude) {
+// the bisector. Such a knot point moves onto the corner if that is within kMaxMoveToCorner of
+// the way to its neighbours (`moves`); the strips' knot points go to the corner's offset point
+// (the miter) even where they cannot move, since their own offset point, past the bisector, is
+// nearer the other side than the amplitude. The first and the last knot point stay at the
+// closing point.
+struct PeakCorner {
+  int corner = -1;
+  bool moves = false;
+  double arc_length = 0.0;  ///< the corner's arc length (L for the closing corner near the end)
+};
+
+PeakCorner cornerOfPeak(const ContourFrame& frame, std::size_t i, double amplitude) {
   const std::vector<WavePeak>& peaks = frame.layout.peaks;
-  if (i == 0 || i + 1 == peaks.size()) return closesAtACorner(frame) ? 0 : -1;
+  if (i == 0 || i + 1 == peaks.size()) {
+    return {closesAtACorner(frame) ? 0 : -1, true, i == 0 ? 0.0 : frame.layout.length};
+  }
   const double l = peaks[i].arc_length;
   const double room =
       kMaxMoveToCorner * std::min(l - peaks[i - 1].arc_length, peaks[i + 1].arc_length - l);
   const bool may_move = frame.layout.waveform != Waveform::Rectangle;
-  int best = -1;
+  const bool to_miter = isStripWaveform(frame.layout.waveform);
+  PeakCorner best;
   double best_distance = 0.0;
   for (std::size_t c = 0; c < frame.corners.size(); ++c) {
     const ContourCorner& corner = frame.corners[c];
-    const double distance = std::abs(corner.arc_length - l);
-    const double reach =
-        may_move ? std::min(room, corner.swallowtail(peaks[i].sign * amplitude)) : 0.0;
-    if ((distance < kSameArcLength || distance < reach) && (best < 0 || distance < best_distance)) {
-      best = static_cast<int>(c);
+    double at = corner.arc_length;
+    if (at == 0.0 && l > 0.5 * frame.layout.length) at = frame.layout.length;
+    const double distance = std::abs(at - l);
+    const double swallowtail = corner.swallowtail(peaks[i].sign * amplitude);
+    const bool moves =
+        distance < kSameArcLength || (may_move && distance < std::min(room, swallowtail));
+    // Only a corner within the strips next to the knot point: the knot points keep their
+    // order, and its neighbour on the corner (if any) lies outside the angle.
+    const bool next_to = at >= peaks[i - 1].arc_length && at <= peaks[i + 1].arc_length;
+    // The miter lies swallowtail - distance further along the side than the knot point's own
+    // offset point; no further than its neighbours.
+    const bool shifts = distance < swallowtail && swallowtail - distance < 2.0 * room;
+    if ((moves || (to_miter && next_to && shifts)) &&
+        (best.corner < 0 || distance < best_distance)) {
+      best = {static_cast<int>(c), moves, at};
       best_distance = distance;
     }
   }
@@ -121,20 +147,18 @@ int cornerOfPeak(const ContourFrame& frame, std::size_t i, double amplitude) {
 Placement placePeak(const ContourFrame& frame, std::size_t i, double amplitude) {
   const WavePeak& peak = frame.layout.peaks[i];
   Placement placement;
-  placement.corner = cornerOfPeak(frame, i, amplitude);
+  const PeakCorner to = cornerOfPeak(frame, i, amplitude);
+  placement.corner = to.corner;
   if (placement.corner >= 0) {
     const ContourCorner& corner = frame.corners[placement.corner];
-    placement.parameter =
-        i == 0 ? 0.0
-               : (i + 1 == frame.layout.peaks.size() ? frame.layout.length : corner.arc_length);
+    placement.parameter = to.moves ? to.arc_length : peak.arc_length;
     placement.base = corner.point;
     placement.direction = peak.sign * corner.bisector;
     // The strips follow a knot point inside the angle to its miter; the smooth waveforms'
     // offset contour cannot reach it (the neighbours' offsets meet the bisector first), so
     // there the thesis' half-space test decides how far it may go along the bisector.
-    const bool strips =
-        frame.layout.waveform == Waveform::Triangle || frame.layout.waveform == Waveform::Sawtooth;
-    placement.growth = strips ? 1.0 / corner.stretch(peak.sign * amplitude) : 1.0;
+    placement.growth =
+        isStripWaveform(frame.layout.waveform) ? 1.0 / corner.stretch(peak.sign * amplitude) : 1.0;
     return placement;
   }
   const ContourSample& sample = frame.samples->peaks[i];

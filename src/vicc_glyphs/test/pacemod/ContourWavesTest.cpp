@@ -169,6 +169,33 @@ TEST(ContourWavesTest, RectangleFlanksAreStraightAndPlateausFollowTheOffsetConto
   }
 }
 
+// Distance of `p` from the boundary of the square of square() (inside or outside).
+double distanceFromSquare(const Point2& p) {
+  const double dx = std::max({50.0 - p.x(), p.x() - 250.0, 0.0});
+  const double dy = std::max({50.0 - p.y(), p.y() - 250.0, 0.0});
+  if (dx > 0.0 || dy > 0.0) return std::hypot(dx, dy);
+  return std::min({p.x() - 50.0, 250.0 - p.x(), p.y() - 50.0, 250.0 - p.y()});
+}
+
+// 22 sawtooth waves on the square (period 36.4 px, steep flanks 3.6 px): the inward knot points
+// next to the corner at arc length 400 and to the closing corner lie 3.6 px before them, within
+// the 4 px along which an inward offset by 4 falls past the corner's bisector, and too far to
+// move onto the corner (the neighbour is 3.6 px away on the other side). Their own offset points
+// would be 3.6 px from the other side; they go to the corners' miters instead, 4 px from both
+// sides, and keep their places in the knot vector.
+TEST(ContourWavesTest, StripKnotPointsInsideACornersAngleGoToItsMiter) {
+  const ContourWave wave = squareWaves(Waveform::Sawtooth, 22, 4.0);
+  int at_miter = 0;
+  for (std::size_t i = 0; i < wave.parameters.size(); ++i) {
+    EXPECT_NEAR(wave.parameters[i], wave.layout.peaks[i].arc_length, 1e-9);
+    EXPECT_EQ(cornerControlIndex(wave.curve, wave.parameters[i]) % 3, 0);
+    const Point2 p = wave.curve.pointAt(wave.parameters[i]);
+    EXPECT_NEAR(distanceFromSquare(p), 4.0, 0.01) << "knot point " << i;
+    if ((p - Point2(246, 246)).norm() < 1e-6 || (p - Point2(54, 54)).norm() < 1e-6) ++at_miter;
+  }
+  EXPECT_EQ(at_miter, 2);
+}
+
 TEST(ContourWavesTest, OpenCurvesAreRejected) {
   const BSplineCurve open(3, BSplineCurve::clampedUniformKnots(3, 4, 0, 1),
                           {{0, 0}, {10, 0}, {20, 5}, {30, 0}});

@@ -9,7 +9,10 @@
 //    with alternating signs, each amplitude limited by the skeleton guard if one is given. A
 //    knot point on an icon corner, or so near one that inside the corner's angle its offset
 //    would fall past the bisector (contour_corners.hpp), moves onto the corner and along its
-//    bisector, to the corner's offset point;
+//    bisector, to the corner's offset point; where its neighbours leave no room to move, a
+//    strip knot point (triangle, sawtooth) still goes to that offset point (the miter), at its
+//    own arc length, instead of to its own offset point, which lies nearer the corner's other
+//    side than the amplitude;
 // 3. sine and rectangle: the contour offset by the wave's profile between the knot points (the
 //    sine's half cosines, the rectangle's plateaus and linear flanks) is fitted by least squares
 //    on the knots (offset_fit.hpp; the rectangle's corners with multiplicity 3), then
@@ -38,7 +41,9 @@ struct ContourWave {
   /// Per layout peak: the spline parameter (= arc length) where the curve meets the translated
   /// knot point: the peak's own, or that of the icon corner it moved onto.
   std::vector<double> parameters;
-  std::vector<int> on_corner;        ///< per layout peak: index in ContourFrame::corners, or -1
+  /// Per layout peak: the icon corner (index in ContourFrame::corners) whose offset point it
+  /// goes to, or -1.
+  std::vector<int> on_corner;
   std::vector<Point2> knot_points;   ///< per layout peak: the contour point k it moves from
   std::vector<Point2> directions;    ///< per layout peak: unit translation direction (sign * n)
   std::vector<GuardResult> guarded;  ///< per layout peak: the amplitude actually applied
