@@ -38,6 +38,11 @@ constexpr double kFitTolerance = 0.03;
 constexpr int kMaxRefinements = 4;
 constexpr int kRefinementProbes = 4;     // places checked per knot span
 constexpr double kMinRefinedSpan = 0.5;  // px: spans shorter than twice this stay
+// A strip is split at its middle where one cubic leaves the contour's offset path by more than
+// this (px), at most kMaxStripSplits times, into pieces no shorter than kMinStripPiece (px).
+constexpr double kStripTolerance = 0.05;
+constexpr int kMaxStripSplits = 3;
+constexpr double kMinStripPiece = 2.0;
 // A knot point limited on an icon corner is reported when it keeps less than this of its
 // amplitude.
 constexpr double kCornerShortfall = 0.99;
@@ -341,18 +346,47 @@ BSplineCurve smoothWave(const ContourFrame& frame, const ContourWave& wave) {
   return curve;
 }
 
+// A C0 place of a strip wave: a translated knot point, or an icon corner inside a strip (at its
+// offset point), or a place where a long strip on a bend is split.
+struct StripBreak {
+  double arc_length;
+  double offset;
+  Point2 point;
+  const ContourCorner* corner;
+};
+
+// Fits the strip from `a` to `b` as one cubic, appended to `points` (its inner de Boor points
+// and b's), or, where that cubic leaves the contour's offset path by more than
+// kStripTolerance (a long strip on a bend: a sawtooth's flank at 2 waves/10 mm is 46 px long),
+// as two strips split at the middle (the offset interpolated there), recursively. A strip that
+// ends at an icon corner stays whole: split there, more knot points were reduced by the polygon
+// check than lobes gained (bench, session 20).
+void appendStrip(const OffsetFrame& offsets, const StripBreak& a, const StripBreak& b, int depth,
+                 std::vector<double>& knots, std::vector<Point2>& points) {
+  const std::size_t first = points.size() - 1;
+  points.insert(points.end(), 3, b.point);
+  const double residual = detail::fitStrip(
+      points, static_cast<int>(first),
+      {a.arc_length, b.arc_length, a.offset, b.offset, a.corner, b.corner}, offsets);
+  if (residual <= kStripTolerance || depth == kMaxStripSplits || a.corner || b.corner ||
+      b.arc_length - a.arc_length < 2.0 * kMinStripPiece) {
+    return;
+  }
+  const double middle = 0.5 * (a.arc_length + b.arc_length);
+  const double w = 0.5 * (a.offset + b.offset);
+  const StripBreak split{middle, w, offsets.offsetPoint(middle, w), nullptr};
+  points.resize(first + 1);
+  appendStrip(offsets, a, split, depth + 1, knots, points);
+  knots.insert(knots.end(), 3, middle);
+  appendStrip(offsets, split, b, depth + 1, knots, points);
+}
+
 // Triangle and sawtooth: straight strips between the translated corners. An icon corner inside
 // a strip splits it at its offset point (the strip's offset interpolated there), so that the
 // wave keeps its distance around the corner instead of cutting it with one cubic.
 BSplineCurve stripWave(const ContourFrame& frame, const OffsetFrame& offsets,
                        const ContourWave& wave) {
-  struct Break {
-    double arc_length;
-    double offset;
-    Point2 point;
-    const ContourCorner* corner;
-  };
-  std::vector<Break> breaks;
+  std::vector<StripBreak> breaks;
   const std::size_t count = wave.parameters.size();
   for (std::size_t i = 0; i < count; ++i) {
     const ContourCorner* own = wave.on_corner[i] >= 0 ? &frame.corners[wave.on_corner[i]] : nullptr;
@@ -371,17 +405,11 @@ BSplineCurve stripWave(const ContourFrame& frame, const OffsetFrame& offsets,
   }
   std::vector<double> knots(4, 0.0);
   std::vector<Point2> points{breaks.front().point};
-  for (std::size_t k = 1; k < breaks.size(); ++k) {
-    if (k + 1 < breaks.size()) knots.insert(knots.end(), 3, breaks[k].arc_length);
-    points.insert(points.end(), 3, breaks[k].point);
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+    if (k > 0) knots.insert(knots.end(), 3, breaks[k].arc_length);
+    appendStrip(offsets, breaks[k], breaks[k + 1], 0, knots, points);
   }
   knots.insert(knots.end(), 4, wave.layout.length);
-  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
-    detail::fitStrip(points, static_cast<int>(3 * k),
-                     {breaks[k].arc_length, breaks[k + 1].arc_length, breaks[k].offset,
-                      breaks[k + 1].offset, breaks[k].corner, breaks[k + 1].corner},
-                     offsets);
-  }
   return BSplineCurve(3, std::move(knots), std::move(points));
 }
 

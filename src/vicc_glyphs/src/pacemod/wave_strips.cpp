@@ -86,13 +86,13 @@ std::vector<Point2> outerArc(const ContourCorner& corner, double w, int side) {
   return arc;
 }
 
-void fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
-              const OffsetFrame& frame) {
-  fitStrip(points, first, piece, stripSamples(frame, piece.l0, piece.l1));
+double fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
+                const OffsetFrame& frame) {
+  return fitStrip(points, first, piece, stripSamples(frame, piece.l0, piece.l1));
 }
 
-void fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
-              const std::vector<ContourSample>& samples) {
+double fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
+                const std::vector<ContourSample>& samples) {
   const Point2 p0 = points[first], p3 = points[first + 3];
   // The offset path with the curve parameter of each point: the arc-length fraction along the
   // piece, or (once a corner changed the path) the chord length along it.
@@ -108,8 +108,9 @@ void fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
     }
   };
   addArc(piece.corner_at_begin, piece.w0, +1);
-  for (int k = 1; k <= kStripSamples; ++k) {
-    const double t = static_cast<double>(k) / (kStripSamples + 1);
+  const int count = static_cast<int>(samples.size());
+  for (int k = 1; k <= count; ++k) {
+    const double t = static_cast<double>(k) / (count + 1);
     const ContourSample& sample = samples[k - 1];
     const Point2 q = sample.point + ((1 - t) * piece.w0 + t * piece.w1) * sample.normal;
     if ((piece.corner_at_begin && piece.corner_at_begin->pastBisector(q, +1)) ||
@@ -133,7 +134,7 @@ void fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
   if (path.size() < 4 || !(at.back() > 0.0)) {  // too little left: the straight line
     points[first + 1] = p0 + (p3 - p0) / 3.0;
     points[first + 2] = p0 + 2.0 * (p3 - p0) / 3.0;
-    return;
+    return 0.0;
   }
   Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
   Eigen::Matrix2d rhs = Eigen::Matrix2d::Zero();
@@ -146,8 +147,16 @@ void fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
     rhs += basis * (path[i] - b0 * p0 - b3 * p3).transpose();
   }
   const Eigen::Matrix2d inner = normal.ldlt().solve(rhs);
-  points[first + 1] = inner.row(0).transpose();
-  points[first + 2] = inner.row(1).transpose();
+  const Point2 p1 = inner.row(0).transpose(), p2 = inner.row(1).transpose();
+  points[first + 1] = p1;
+  points[first + 2] = p2;
+  double residual = 0.0;
+  for (std::size_t i = 1; i + 1 < path.size(); ++i) {
+    const double t = at[i], s = 1.0 - t;
+    const Point2 fitted = s * s * s * p0 + 3 * t * s * s * p1 + 3 * t * t * s * p2 + t * t * t * p3;
+    residual = std::max(residual, (fitted - path[i]).norm());
+  }
+  return residual;
 }
 
 }  // namespace detail

@@ -55,14 +55,16 @@ struct StripPiece {
 
 /// Sets points[first + 1] and points[first + 2], the inner de Boor points of the cubic piece
 /// points[first .. first + 3] (its ends stay), by least squares with chord-length parameters.
-void fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
-              const OffsetFrame& frame);
+/// Returns the largest distance of the fitted cubic from the offset path it follows (at the
+/// path's points).
+double fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
+                const OffsetFrame& frame);
 /// The places inside a piece from arc length l0 to l1 that its strip follows. They do not
 /// depend on the offsets: a piece fitted for several amplitudes needs them once.
 std::vector<ContourSample> stripSamples(const OffsetFrame& frame, double l0, double l1);
 /// fitStrip on `samples` = stripSamples(frame, piece.l0, piece.l1).
-void fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
-              const std::vector<ContourSample>& samples);
+double fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
+                const std::vector<ContourSample>& samples);
 
 }  // namespace detail
 }  // namespace pacemod

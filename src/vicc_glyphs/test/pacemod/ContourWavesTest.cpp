@@ -146,6 +146,23 @@ TEST(ContourWavesTest, StripsOnACurvedContourFollowItWithALinearOffset) {
   }
 }
 
+// 2 sawtooth waves on the circle: each slow flank runs 141 px around 162 degrees of it, which
+// one cubic cannot follow (it would cut inside by several px); the strip is split at its
+// middle until its pieces follow the linear offset.
+TEST(ContourWavesTest, LongStripsOnABendAreSplitUntilTheyFollowTheirOffset) {
+  const ContourWave wave = waves(Waveform::Sawtooth, 2, 3.0);
+  EXPECT_GT(wave.curve.controlPoints().size(), 3 * (wave.layout.peaks.size() - 1) + 1);
+  for (std::size_t j = 0; j + 1 < wave.layout.peaks.size(); ++j) {
+    const WavePeak& a = wave.layout.peaks[j];
+    const WavePeak& b = wave.layout.peaks[j + 1];
+    for (int k = 1; k < 40; ++k) {
+      const double t = k / 40.0, l = a.arc_length + t * (b.arc_length - a.arc_length);
+      const double linear = 3.0 * ((1 - t) * a.sign + t * b.sign);
+      EXPECT_NEAR(radialOffset(wave.curve, l), linear, 0.1) << "strip " << j << " at " << t;
+    }
+  }
+}
+
 TEST(ContourWavesTest, RectangleFlanksAreStraightAndPlateausFollowTheOffsetContour) {
   const ContourWave flat = squareWaves(Waveform::Rectangle, 20, 3.0);
   int straight = 0;

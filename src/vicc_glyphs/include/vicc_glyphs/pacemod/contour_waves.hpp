@@ -21,7 +21,9 @@
 //    closing point), and the rectangle's flank spans become strips;
 //    triangle and sawtooth consist of strips only: every third de Boor point is a corner (Fig.
 //    6.14B), the two between follow the contour offset linearly from one corner's amplitude to
-//    the next (wave_strips.hpp), and an icon corner inside a strip splits it at its offset point.
+//    the next (wave_strips.hpp), and an icon corner inside a strip splits it at its offset point;
+//    a long strip on a bend that one cubic cannot follow within 0.05 px is split at its middle
+//    (further C0 knots: degrees of freedom where the contour needs them).
 
 #include <memory>
 #include <vector>
