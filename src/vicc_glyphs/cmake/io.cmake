@@ -65,6 +65,18 @@ install(TARGETS vicc_glyphs_formats vicc_glyphs_io
   ARCHIVE DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION})
 install(DIRECTORY data/icons data/samples DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION}/data)
 
+# The stroke outliners' accuracy cases and measurement, shared by their bench and CurveStrokeTest.
+add_library(vicc_glyphs_stroke_accuracy STATIC bench/stroke/stroke_accuracy.cpp)
+target_include_directories(vicc_glyphs_stroke_accuracy SYSTEM PUBLIC
+  ${VICC_GLYPHS_POLYCLIPPING_INCLUDE_DIRS})
+target_include_directories(vicc_glyphs_stroke_accuracy PUBLIC src/io bench)
+target_compile_options(vicc_glyphs_stroke_accuracy PRIVATE ${VICC_WARNINGS})
+target_link_libraries(vicc_glyphs_stroke_accuracy vicc_glyphs_formats)
+
+add_executable(vicc_glyphs_stroke_bench bench/stroke/stroke_outliner_bench.cpp)
+target_compile_options(vicc_glyphs_stroke_bench PRIVATE ${VICC_WARNINGS})
+target_link_libraries(vicc_glyphs_stroke_bench vicc_glyphs_stroke_accuracy vicc_common_cli)
+
 if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(vicc_glyphs_io_test
     test/io/OrzanXmlTest.cpp
@@ -87,8 +99,8 @@ if(CATKIN_ENABLE_TESTING)
     VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data"
     VICC_GLYPHS_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/test/data")
   # PublishedSampleTest renders the samples it reads.
-  target_link_libraries(vicc_glyphs_io_test vicc_glyphs_io vicc_glyphs_render ${OpenCV_LIBRARIES}
-    gtest_main)
+  target_link_libraries(vicc_glyphs_io_test vicc_glyphs_io vicc_glyphs_render
+    vicc_glyphs_stroke_accuracy ${OpenCV_LIBRARIES} gtest_main)
 endif()
 
 if(CATKIN_ENABLE_TESTING)

@@ -1,17 +1,16 @@
 // Strokes outlined by own offset curves (curve_stroke.cpp) against the expected geometry and
-// against Clipper's offsetting (svg_stroke.cpp); the accuracy table of bench/fidelity/README.md
-// (session 18) is printed by OffsetAccuracyAgainstTheTrueOffset.
+// against Clipper's offsetting (svg_stroke.cpp). The accuracy table of
+// bench/fidelity/README.md (session 18) is printed by vicc_glyphs_stroke_bench.
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "curve_stroke.hpp"
+#include "stroke/stroke_accuracy.hpp"
 #include "vicc_glyphs/io/svg_import.hpp"
 
 namespace vicc_glyphs {
@@ -19,17 +18,13 @@ namespace io_detail {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kSize = 256;
-constexpr double kTolerance = kSize / 8192.0;  // the importer's flattening tolerance (pixels)
+constexpr double kTolerance = stroke_accuracy::kTolerance;  // the importer's, in pixels
 
 using Outliner =
     std::function<Paths(const std::vector<Subpath>&, const Affine2&, const StrokeGeometry&,
                         const IntegerFrame&, double, VertexBudget&)>;
 
-const IntegerFrame& frame() {
-  static const IntegerFrame f(kSize, kSize);
-  return f;
-}
+const IntegerFrame& frame() { return stroke_accuracy::caseFrame(); }
 
 Paths outline(const Outliner& outliner, const std::vector<Subpath>& subpaths,
               const StrokeGeometry& stroke, const Affine2& transform = Affine2::Identity()) {
@@ -52,7 +47,9 @@ StrokeGeometry geometry(double width, LineCap cap, LineJoin join, double miter_l
   return g;
 }
 
-Subpath cubic(Point2 a, Point2 b, Point2 c, Point2 d) { return {{a, b, c, d}, false}; }
+Subpath cubic(Point2 a, Point2 b, Point2 c, Point2 d) {
+  return stroke_accuracy::cubicSubpath(a, b, c, d);
+}
 
 Subpath polyline(const std::vector<Point2>& points, bool closed = false) {
   Subpath s{{points.front()}, closed};
@@ -63,14 +60,7 @@ Subpath polyline(const std::vector<Point2>& points, bool closed = false) {
   return s;
 }
 
-Subpath circle(const Point2& c, double r) {
-  const double k = 0.5522847498 * r;
-  return {
-      {c + Point2(r, 0), c + Point2(r, k), c + Point2(k, r), c + Point2(0, r), c + Point2(-k, r),
-       c + Point2(-r, k), c + Point2(-r, 0), c + Point2(-r, -k), c + Point2(-k, -r),
-       c + Point2(0, -r), c + Point2(k, -r), c + Point2(r, -k), c + Point2(r, 0)},
-      true};
-}
+Subpath circle(const Point2& c, double r) { return stroke_accuracy::circleSubpath(c, r); }
 
 double areaOf(const Paths& paths) {
   double area = 0.0;
@@ -222,58 +212,6 @@ TEST(CurveStroke, RefusesOutOfRangeAndTooManyVertices) {
                   .empty());
 }
 
-// Distance from p to the cubic chain: nearest of dense samples, refined by Newton steps.
-double distanceToChain(const Contour& chain, const Point2& p) {
-  double best = 1e300;
-  for (std::size_t k = 0; k + 3 < chain.size(); k += 3) {
-    const Point2* b = &chain[k];
-    auto at = [&](double t) {
-      const double u = 1 - t;
-      return u * u * u * b[0] + 3 * u * u * t * b[1] + 3 * u * t * t * b[2] + t * t * t * b[3];
-    };
-    auto d1 = [&](double t) {
-      const double u = 1 - t;
-      return 3 * (u * u * (b[1] - b[0]) + 2 * u * t * (b[2] - b[1]) + t * t * (b[3] - b[2]));
-    };
-    constexpr int kSamples = 4000;
-    double t_best = 0.0, d_best = 1e300;
-    for (int i = 0; i <= kSamples; ++i) {
-      const double t = static_cast<double>(i) / kSamples, d = (at(t) - p).norm();
-      if (d < d_best) d_best = d, t_best = t;
-    }
-    double t = t_best;
-    for (int i = 0; i < 8; ++i) {  // minimise |at(t) - p| with a secant-free Gauss-Newton step
-      const Point2 g = d1(t);
-      if (g.squaredNorm() == 0.0) break;
-      t = std::clamp(t - (at(t) - p).dot(g) / g.squaredNorm(), 0.0, 1.0);
-    }
-    best = std::min({best, d_best, (at(t) - p).norm()});
-  }
-  return best;
-}
-
-struct Deviation {
-  double max = 0.0, mean = 0.0;
-  std::size_t vertices = 0;
-};
-
-// Every boundary point of a round-capped, round-joined stroke lies at width / 2 from the
-// centreline; the vertices' deviation from that is the outline's error.
-Deviation deviation(const Paths& area, const std::vector<Subpath>& subpaths, double half) {
-  Deviation d;
-  for (const Path& path : area) {
-    for (const IntPoint& q : path) {
-      const Point2 p = frame().toPixel(q);
-      double distance = 1e300;
-      for (const Subpath& s : subpaths) distance = std::min(distance, distanceToChain(s.points, p));
-      const double e = std::abs(distance - half);
-      d.max = std::max(d.max, e), d.mean += e, ++d.vertices;
-    }
-  }
-  d.mean /= std::max<std::size_t>(d.vertices, 1);
-  return d;
-}
-
 TEST(CurveStroke, RandomChainsAgreeWithClipperWithRoundCapsAndJoins) {
   // Round caps and joins: both outliners approximate the same disc union, so their symmetric
   // difference per unit of outline length (area / (2 area / width)) stays at the tolerance.
@@ -304,46 +242,18 @@ TEST(CurveStroke, ClosedPathRunningBackKeepsBothRoundEnds) {
               length * 2 * half + kPi * half * half, 0.5);
 }
 
+// Every outline vertex of a round-capped, round-joined stroke within the importer's tolerance
+// of width / 2 from the centreline, with either outliner (the bench
+// vicc_glyphs_stroke_bench prints the deviations, vertex counts and times).
 TEST(CurveStroke, OffsetAccuracyAgainstTheTrueOffset) {
-  struct Case {
-    const char* name;
-    std::vector<Subpath> subpaths;
-    double width;
-  };
-  const std::vector<Case> cases = {
-      {"arc", {cubic(Point2(40, 200), Point2(80, 60), Point2(176, 60), Point2(216, 200))}, 16},
-      {"s-curve", {cubic(Point2(40, 128), Point2(120, 0), Point2(136, 256), Point2(216, 128))}, 16},
-      {"u-turn", {cubic(Point2(40, 100), Point2(240, 100), Point2(240, 140), Point2(40, 140))}, 16},
-      {"loop", {cubic(Point2(50, 200), Point2(250, 40), Point2(6, 40), Point2(206, 200))}, 16},
-      {"cusp", {cubic(Point2(40, 200), Point2(216, 24), Point2(40, 24), Point2(216, 200))}, 16},
-      {"circle", {circle(Point2(128, 128), 80)}, 16},
-      {"arc-wide", {cubic(Point2(40, 200), Point2(80, 60), Point2(176, 60), Point2(216, 200))}, 48},
-      {"icon-arc",
-       {cubic(Point2(60, 150), Point2(60, 100), Point2(100, 60), Point2(150, 60))},
-       21.3},  // a 2-unit Feather stroke at 256 px
-  };
-  const StrokeGeometry base = geometry(1, LineCap::kRound, LineJoin::kRound);
-  std::printf("| curve | width px | outliner | max dev px | mean dev px | vertices | us |\n");
-  std::printf("|---|---:|---|---:|---:|---:|---:|\n");
-  for (const Case& c : cases) {
-    StrokeGeometry g = base;
-    g.width = c.width;
+  for (const stroke_accuracy::AccuracyCase& c : stroke_accuracy::accuracyCases()) {
+    const StrokeGeometry g = stroke_accuracy::roundStroke(c.width);
     for (const bool own : {false, true}) {
-      const Outliner outliner = own ? Outliner(curveStrokeArea) : Outliner(strokeArea);
-      const auto start = std::chrono::steady_clock::now();
-      constexpr int kRuns = 20;
-      Paths area;
-      for (int i = 0; i < kRuns; ++i) area = outline(outliner, c.subpaths, g);
-      const double us =
-          std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
-              .count() /
-          kRuns;
-      const Deviation d = deviation(area, c.subpaths, 0.5 * c.width);
-      std::printf("| %s | %.1f | %s | %.4f | %.4f | %zu | %.0f |\n", c.name, c.width,
-                  own ? "curves" : "clipper", d.max, d.mean, d.vertices, us);
-      if (own) {
-        EXPECT_LE(d.max, kTolerance) << c.name;
-      }
+      const Paths area = own ? curves(c.subpaths, g) : clipper(c.subpaths, g);
+      const stroke_accuracy::Deviation d =
+          stroke_accuracy::deviation(area, frame(), c.subpaths, 0.5 * c.width);
+      EXPECT_GT(d.vertices, 100u) << c.name;
+      EXPECT_LE(d.max, kTolerance) << c.name << (own ? " curves" : " clipper");
     }
   }
 }

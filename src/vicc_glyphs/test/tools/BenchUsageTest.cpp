@@ -26,4 +26,15 @@ TEST(BenchUsage, ConvergenceHistory) {
   expectUsageError(VICC_GLYPH_CONVERGENCE_BINARY, "--iterations 0 x.svg", "--iterations");
 }
 
+TEST(BenchUsage, StrokeBench) {
+  expectUsageError(VICC_GLYPHS_STROKE_BENCH_BINARY, "--repeats 0", "--repeats");
+  expectUsageError(VICC_GLYPHS_STROKE_BENCH_BINARY, "x.svg", "no positional arguments");
+  // One outline per case: the table has a row per case and outliner.
+  const vicc_test::CommandResult table =
+      vicc_test::runCommand(std::string(VICC_GLYPHS_STROKE_BENCH_BINARY) + " --repeats 1");
+  EXPECT_EQ(table.exit_code, 0) << table.output;
+  EXPECT_NE(table.output.find("| u-turn | 16.0 | curves | "), std::string::npos) << table.output;
+  EXPECT_NE(table.output.find("| icon-arc | 21.3 | clipper | "), std::string::npos) << table.output;
+}
+
 }  // namespace
