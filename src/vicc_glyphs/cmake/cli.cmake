@@ -43,11 +43,12 @@ if(CATKIN_ENABLE_TESTING)
   target_compile_definitions(vicc_glyph_bench_usage_test PRIVATE
     VICC_GLYPH_BENCH_BINARY="$<TARGET_FILE:vicc_glyph_bench>"
     VICC_GLYPH_CONVERGENCE_BINARY="$<TARGET_FILE:vicc_glyph_convergence>"
-    VICC_GLYPHS_STROKE_BENCH_BINARY="$<TARGET_FILE:vicc_glyphs_stroke_bench>")
+    VICC_GLYPHS_STROKE_BENCH_BINARY="$<TARGET_FILE:vicc_glyphs_stroke_bench>"
+    VICC_GLYPHS_FEATURE_TRANSFORM_BENCH_BINARY="$<TARGET_FILE:vicc_glyphs_feature_transform_bench>")
   # run_command.hpp: the workspace's shared test helpers
   target_include_directories(vicc_glyph_bench_usage_test PRIVATE
     ${CMAKE_CURRENT_SOURCE_DIR}/../../test/common)
   target_link_libraries(vicc_glyph_bench_usage_test gtest_main)
   add_dependencies(vicc_glyph_bench_usage_test vicc_glyph_bench vicc_glyph_convergence
-    vicc_glyphs_stroke_bench)
+    vicc_glyphs_stroke_bench vicc_glyphs_feature_transform_bench)
 endif()

@@ -105,5 +105,6 @@ if(TARGET vicc_glyphs_io)
   target_compile_options(vicc_glyphs_feature_transform_bench PRIVATE ${VICC_WARNINGS})
   target_compile_definitions(vicc_glyphs_feature_transform_bench PRIVATE
     VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
-  target_link_libraries(vicc_glyphs_feature_transform_bench vicc_glyphs_pacemod vicc_glyphs_io)
+  target_link_libraries(vicc_glyphs_feature_transform_bench vicc_glyphs_pacemod vicc_glyphs_io
+    vicc_common_cli)
 endif()

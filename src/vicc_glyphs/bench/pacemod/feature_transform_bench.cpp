@@ -2,7 +2,7 @@
 // data/icons at 512 px, the CPU time to build NearestCurvePoint with OpenCV's labelled distance
 // transform and with Maurer's exact transform, and the error of the distance to the returned
 // point against the exact distance to the curves' polylines at 20000 random points.
-// Usage: vicc_glyphs_feature_transform_bench [ICON_DIR]
+// Usage: vicc_glyphs_feature_transform_bench [ICON_DIR] (default: the vendored MDI icons)
 
 #include <algorithm>
 #include <cstdio>
@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "vicc_common/command_line.hpp"
 #include "vicc_glyphs/io/load.hpp"
 #include "vicc_glyphs/pacemod/nearest_curve_point.hpp"
 #include "vicc_glyphs/pacemod/polyline.hpp"
@@ -58,14 +59,30 @@ void measure(const std::vector<Polyline>& lines, FeatureTransform method, Result
   }
 }
 
-}  // namespace
+namespace cli = vicc_common::cli;
 
-int main(int argc, char** argv) {
-  const fs::path dir = argc > 1 ? fs::path(argv[1]) : fs::path(VICC_GLYPHS_DATA_DIR "/icons");
+std::string usage() {
+  return cli::helpText(
+      "vicc_glyphs_feature_transform_bench [ICON_DIR]",
+      "For every SVG icon of ICON_DIR (default: the vendored MDI icons) at 512 px: CPU time to "
+      "build the skeleton guard's\nnearest-curve-point field with OpenCV's labelled distance "
+      "transform and with Maurer's transform, and the\ndistance error at 20000 random points "
+      "(Markdown table on stdout). Exit code 0 on success, 1 on an error,\n2 on a usage error.",
+      {});
+}
+
+int run(const std::vector<std::string>& args) {
+  const cli::ParsedArguments parsed = cli::parseArguments(args, {});
+  if (parsed.positional.size() > 1) throw cli::UsageError("more than one ICON_DIR given");
+  const fs::path dir = parsed.positional.empty() ? fs::path(VICC_GLYPHS_DATA_DIR "/icons")
+                                                 : fs::path(parsed.positional[0]);
+  if (!fs::is_directory(dir)) throw cli::UsageError("no directory " + dir.string());
   std::vector<fs::path> icons;
   for (const auto& entry : fs::directory_iterator(dir)) {
     if (entry.path().extension() == ".svg") icons.push_back(entry.path());
   }
+  if (icons.empty()) throw cli::UsageError("no .svg icon in " + dir.string());
+  std::sort(icons.begin(), icons.end());
   Result opencv, maurer;
   for (const fs::path& icon : icons) {
     const DiffusionCurveImage image = loadDiffusionCurves(icon.string(), 512);
@@ -87,4 +104,10 @@ int main(int argc, char** argv) {
                 sorted.back(), r.error_sum / r.queries, r.error_max);
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return cli::runTool("vicc_glyphs_feature_transform_bench", argc, argv, usage(), run);
 }

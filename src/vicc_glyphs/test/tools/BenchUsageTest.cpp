@@ -37,4 +37,11 @@ TEST(BenchUsage, StrokeBench) {
   EXPECT_NE(table.output.find("| icon-arc | 21.3 | clipper | "), std::string::npos) << table.output;
 }
 
+TEST(BenchUsage, FeatureTransformBench) {
+  expectUsageError(VICC_GLYPHS_FEATURE_TRANSFORM_BENCH_BINARY, "/nonexistent/icons",
+                   "no directory /nonexistent/icons");
+  expectUsageError(VICC_GLYPHS_FEATURE_TRANSFORM_BENCH_BINARY, "a b", "more than one ICON_DIR");
+  expectUsageError(VICC_GLYPHS_FEATURE_TRANSFORM_BENCH_BINARY, "--grid 3", "--grid");
+}
+
 }  // namespace
