@@ -94,6 +94,9 @@ struct Placement {
   Point2 direction = Point2::Zero();
   double growth = 1.0;
   int corner = -1;
+  /// At a corner's offset point without moving onto the corner (strips): valid only for an
+  /// amplitude that puts the knot point's own offset point past the corner's bisector.
+  bool at_miter = false;
 };
 
 bool isStripWaveform(Waveform waveform) {
@@ -157,6 +160,7 @@ Placement placePeak(const ContourFrame& frame, std::size_t i, double amplitude) 
   if (placement.corner >= 0) {
     const ContourCorner& corner = frame.corners[placement.corner];
     placement.parameter = to.moves ? to.arc_length : peak.arc_length;
+    placement.at_miter = !to.moves;
     placement.base = corner.point;
     placement.direction = peak.sign * corner.bisector;
     // The strips follow a knot point inside the angle to its miter; the smooth waveforms'
@@ -171,6 +175,27 @@ Placement placePeak(const ContourFrame& frame, std::size_t i, double amplitude) 
   placement.base = sample.point;
   placement.direction = peak.sign * sample.normal;
   return placement;
+}
+
+GuardResult guardedAmplitude(const Placement& placement, double amplitude,
+                             const SkeletonGuard* guard) {
+  return guard ? guard->limit(placement.base, placement.direction, amplitude, placement.growth)
+               : GuardResult{std::max(amplitude, 0.0), false, 0};
+}
+
+// placePeak for the amplitude the knot point can have: a strip knot point goes to a corner's
+// miter only while its own offset point, by that amplitude, would fall past the bisector. With
+// less (a repair round's cap, the skeleton guard) its own offset point is the offset contour,
+// and the miter, further along the side, would make the strips next to it run back.
+Placement placeGuardedPeak(const ContourFrame& frame, std::size_t i, double amplitude,
+                           const SkeletonGuard* guard, const std::vector<double>& caps) {
+  const Placement placement = placePeak(frame, i, amplitude);
+  if (!placement.at_miter) return placement;
+  double allowed = guardedAmplitude(placement, amplitude, guard).amplitude;
+  if (i < caps.size()) allowed = std::min(allowed, std::max(caps[i], 0.0));
+  if (allowed >= amplitude) return placement;
+  const Placement own = placePeak(frame, i, allowed);
+  return own.at_miter || own.corner < 0 ? own : placement;
 }
 
 // The original's points and normals that placePeak and smoothWave take, for every amplitude.
@@ -495,10 +520,8 @@ ContourWave modifyContour(const ContourFrame& frame, const BSplineCurve& origina
       wave.translations.push_back(wave.translations.front());
       continue;
     }
-    const Placement placement = placePeak(frame, i, amplitude);
-    GuardResult allowed =
-        guard ? guard->limit(placement.base, placement.direction, amplitude, placement.growth)
-              : GuardResult{std::max(amplitude, 0.0), false, 0};
+    const Placement placement = placeGuardedPeak(frame, i, amplitude, guard, caps);
+    GuardResult allowed = guardedAmplitude(placement, amplitude, guard);
     const bool capped = i < caps.size() && caps[i] < allowed.amplitude;
     if (capped) allowed.amplitude = std::max(caps[i], 0.0);
     wave.parameters.push_back(placement.parameter);

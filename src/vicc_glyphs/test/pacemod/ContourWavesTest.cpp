@@ -4,6 +4,7 @@
 
 #include "vicc_glyphs/bspline/bezier_conversion.hpp"
 #include "vicc_glyphs/pacemod/contour_waves.hpp"
+#include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 
 namespace vicc_glyphs {
 namespace pacemod {
@@ -211,6 +212,25 @@ TEST(ContourWavesTest, StripKnotPointsInsideACornersAngleGoToItsMiter) {
     if ((p - Point2(246, 246)).norm() < 1e-6 || (p - Point2(54, 54)).norm() < 1e-6) ++at_miter;
   }
   EXPECT_EQ(at_miter, 2);
+}
+
+// The same knot point capped to 1 px (a repair round's cap): its own offset point by 1 px no
+// longer falls past the bisector (3.6 px from the corner), so it keeps its own place instead of
+// the miter for 1 px, which lies 2.6 px further along the side; the strips next to it do not
+// run back.
+TEST(ContourWavesTest, AStripKnotPointCappedBelowItsMiterTakesItsOwnOffsetPoint) {
+  const BSplineCurve original = square();
+  const bspline::ArcLengthTable table(original, 256);
+  std::vector<double> caps(45, 1e300);
+  caps[21] = 1.0;
+  const ContourWave wave =
+      modifyContour(original, table, Waveform::Sawtooth, 22, 4.0, nullptr, caps);
+  EXPECT_EQ(wave.on_corner[21], -1);
+  const Point2 p = wave.curve.pointAt(wave.parameters[21]);
+  EXPECT_NEAR(p.x(), 249.0, 1e-6);
+  EXPECT_NEAR(p.y(), 50.0 + wave.layout.peaks[21].arc_length - 200.0, 1e-6);
+  std::vector<double> parameters;
+  EXPECT_TRUE(findCrossings({wave.curve.sampleSpans(16, parameters)}).empty());
 }
 
 TEST(ContourWavesTest, OpenCurvesAreRejected) {

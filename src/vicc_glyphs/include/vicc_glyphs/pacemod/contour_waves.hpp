@@ -12,7 +12,7 @@
 //    bisector, to the corner's offset point; where its neighbours leave no room to move, a
 //    strip knot point (triangle, sawtooth) still goes to that offset point (the miter), at its
 //    own arc length, instead of to its own offset point, which lies nearer the corner's other
-//    side than the amplitude;
+//    side than the amplitude (while the amplitude it keeps after the guard and the caps does);
 // 3. sine and rectangle: the contour offset by the wave's profile between the knot points (the
 //    sine's half cosines, the rectangle's plateaus and linear flanks) is fitted by least squares
 //    on the knots (offset_fit.hpp; the rectangle's corners with multiplicity 3), then
