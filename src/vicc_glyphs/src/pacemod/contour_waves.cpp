@@ -183,19 +183,27 @@ GuardResult guardedAmplitude(const Placement& placement, double amplitude,
                : GuardResult{std::max(amplitude, 0.0), false, 0};
 }
 
-// placePeak for the amplitude the knot point can have: a strip knot point goes to a corner's
-// miter only while its own offset point, by that amplitude, would fall past the bisector. With
-// less (a repair round's cap, the skeleton guard) its own offset point is the offset contour,
-// and the miter, further along the side, would make the strips next to it run back.
-Placement placeGuardedPeak(const ContourFrame& frame, std::size_t i, double amplitude,
-                           const SkeletonGuard* guard, const std::vector<double>& caps) {
+// placePeak for the amplitude the knot point can have, with the skeleton guard's verdict on
+// that place: a strip knot point goes to a corner's miter only while its own offset point, by
+// that amplitude, would fall past the bisector. With less (a repair round's cap, the skeleton
+// guard) its own offset point is the offset contour, and the miter, further along the side,
+// would make the strips next to it run back.
+struct GuardedPlacement {
+  Placement placement;
+  GuardResult allowed;  ///< the guard's amplitude at `placement` (caps not applied)
+};
+
+GuardedPlacement placeGuardedPeak(const ContourFrame& frame, std::size_t i, double amplitude,
+                                  const SkeletonGuard* guard, const std::vector<double>& caps) {
   const Placement placement = placePeak(frame, i, amplitude);
-  if (!placement.at_miter) return placement;
-  double allowed = guardedAmplitude(placement, amplitude, guard).amplitude;
-  if (i < caps.size()) allowed = std::min(allowed, std::max(caps[i], 0.0));
-  if (allowed >= amplitude) return placement;
-  const Placement own = placePeak(frame, i, allowed);
-  return own.at_miter || own.corner < 0 ? own : placement;
+  const GuardResult allowed = guardedAmplitude(placement, amplitude, guard);
+  if (!placement.at_miter) return {placement, allowed};
+  double kept = allowed.amplitude;
+  if (i < caps.size()) kept = std::min(kept, std::max(caps[i], 0.0));
+  if (kept >= amplitude) return {placement, allowed};
+  const Placement own = placePeak(frame, i, kept);
+  if (!own.at_miter && own.corner >= 0) return {placement, allowed};
+  return {own, guardedAmplitude(own, amplitude, guard)};
 }
 
 // The original's points and normals that placePeak and smoothWave take, for every amplitude.
@@ -520,8 +528,9 @@ ContourWave modifyContour(const ContourFrame& frame, const BSplineCurve& origina
       wave.translations.push_back(wave.translations.front());
       continue;
     }
-    const Placement placement = placeGuardedPeak(frame, i, amplitude, guard, caps);
-    GuardResult allowed = guardedAmplitude(placement, amplitude, guard);
+    const GuardedPlacement guarded = placeGuardedPeak(frame, i, amplitude, guard, caps);
+    const Placement& placement = guarded.placement;
+    GuardResult allowed = guarded.allowed;
     const bool capped = i < caps.size() && caps[i] < allowed.amplitude;
     if (capped) allowed.amplitude = std::max(caps[i], 0.0);
     wave.parameters.push_back(placement.parameter);
