@@ -19,6 +19,7 @@ add_library(vicc_glyphs_pacemod
   src/pacemod/contour_corners.cpp
   src/pacemod/wave_strips.cpp
   src/pacemod/offset_fit.cpp
+  src/pacemod/original_splice.cpp
   src/pacemod/contour_waves.cpp
   src/pacemod/periodic_waves.cpp
   src/pacemod/offset_contour.cpp
@@ -66,6 +67,7 @@ if(CATKIN_ENABLE_TESTING)
     test/pacemod/FeatureTransformTest.cpp
     test/pacemod/SkeletonGuardTest.cpp
     test/pacemod/ContourWavesTest.cpp
+    test/pacemod/OriginalSpliceTest.cpp
     test/pacemod/OffsetContourTest.cpp
     test/pacemod/PolylineTest.cpp
     test/pacemod/PolygonCrossingsTest.cpp

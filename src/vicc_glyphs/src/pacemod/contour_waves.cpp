@@ -6,6 +6,7 @@
 
 #include "offset_fit.hpp"
 #include "vicc_glyphs/bspline/frenet_frame.hpp"
+#include "vicc_glyphs/pacemod/original_splice.hpp"
 #include "vicc_glyphs/pacemod/sparse_fowler_bartels.hpp"
 #include "wave_strips.hpp"
 
@@ -554,6 +555,10 @@ ContourWave modifyContour(const ContourFrame& frame, const BSplineCurve& origina
       wave.curve = stripWave(frame, offsets, wave);
       break;
   }
+  // Where the wave is flat the contour stays the original exactly (original_splice.hpp).
+  const std::vector<ArcInterval> flat =
+      flatRuns(wave.parameters, wave.translations, wave.swallowed);
+  if (!flat.empty()) wave.curve = spliceOriginal(wave.curve, original, table, flat);
   return wave;
 }
 

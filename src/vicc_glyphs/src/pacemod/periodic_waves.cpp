@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "vicc_glyphs/bspline/arc_length.hpp"
@@ -138,11 +139,54 @@ void capAround(WavedContour& contour, double u, bool last_round) {
   contour.caps.back() = contour.caps.front() = std::min(contour.caps.front(), contour.caps.back());
 }
 
-// The polygon check after the skeleton guard; returns the crossings left per image curve.
+// Where the segments of a crossing meet.
+Point2 crossingPoint(const std::vector<Polyline>& lines, const Crossing& crossing) {
+  const Point2& p = lines[crossing.a.line][crossing.a.segment];
+  const Point2 d = lines[crossing.a.line][crossing.a.segment + 1] - p;
+  const Point2& q = lines[crossing.b.line][crossing.b.segment];
+  const Point2 e = lines[crossing.b.line][crossing.b.segment + 1] - q;
+  const double denominator = d.x() * e.y() - d.y() * e.x();  // not 0: the crossing is proper
+  const Point2 w = q - p;
+  return p + d * ((w.x() * e.y() - w.y() * e.x()) / denominator);
+}
+
+// The crossings that the original contours have themselves: contours that touch (two circles
+// side by side) cross as polygons at the touching point, and a wave kept flat there keeps the
+// original's crossing. Per pair of lines (a < b) the points.
+class InheritedCrossings {
+ public:
+  explicit InheritedCrossings(const DiffusionCurveImage& image) {
+    std::vector<Polyline> lines;
+    for (const DiffusionCurve& curve : image.curves) lines.push_back(sampleCurve(curve, 16));
+    for (const Crossing& crossing : findCrossings(lines, kCrossingCellPx)) {
+      points_[{crossing.a.line, crossing.b.line}].push_back(crossingPoint(lines, crossing));
+    }
+  }
+
+  // Whether `crossing` of `lines` lies where the originals of its two lines cross.
+  bool contains(const std::vector<Polyline>& lines, const Crossing& crossing) const {
+    const auto found = points_.find({crossing.a.line, crossing.b.line});
+    if (found == points_.end()) return false;
+    const Point2 point = crossingPoint(lines, crossing);
+    return std::any_of(found->second.begin(), found->second.end(), [&](const Point2& original) {
+      return (original - point).norm() <= kSamePlacePx;
+    });
+  }
+
+ private:
+  // Sampled differently (the wave's spans, the original's segments), the same crossing moves
+  // by far less than this; a wave's own crossing lies a lobe's amplitude (1 px or more) away.
+  static constexpr double kSamePlacePx = 0.25;
+  std::map<std::pair<int, int>, std::vector<Point2>> points_;
+};
+
+// The polygon check after the skeleton guard; returns the crossings left per image curve
+// (those the original contours have themselves neither repaired nor counted).
 std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
                                    std::map<int, std::unique_ptr<WavedContour>>& waved,
                                    const Context& context) {
   std::map<int, int> left;
+  std::optional<InheritedCrossings> inherited;  // built at the first crossing (most have none)
   // Sampled once; a round samples again only the contours it rebuilt.
   std::vector<Polyline> lines;
   std::vector<std::vector<double>> parameters(image.curves.size());
@@ -157,6 +201,8 @@ std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
     std::map<int, bool> changed;
     left.clear();
     for (const Crossing& crossing : crossings) {
+      if (!inherited) inherited.emplace(image);
+      if (inherited->contains(lines, crossing)) continue;
       for (const SegmentRef& side : {crossing.a, crossing.b}) {
         ++left[side.line];
         const auto found = waved.find(side.line);

@@ -5,6 +5,7 @@
 #include "vicc_glyphs/bspline/bezier_conversion.hpp"
 #include "vicc_glyphs/pacemod/contour_waves.hpp"
 #include "vicc_glyphs/pacemod/polygon_crossings.hpp"
+#include "vicc_glyphs/pacemod/polyline.hpp"
 
 namespace vicc_glyphs {
 namespace pacemod {
@@ -69,6 +70,34 @@ TEST_P(EveryWaveform, TranslatedKnotPointsSitAtTheAmplitudeAndTheCountIsWhole) {
 INSTANTIATE_TEST_SUITE_P(PacemodWaves, EveryWaveform,
                          ::testing::Values(Waveform::Sine, Waveform::Triangle, Waveform::Sawtooth,
                                            Waveform::Rectangle));
+
+// Knot points capped to 0 (the repair's last round, or the guard where two contours touch):
+// between them the contour is the original exactly, not a re-fit that deviates by a few
+// hundredths of a pixel; elsewhere the wave keeps its amplitude.
+TEST_P(EveryWaveform, KnotPointsFlattenedToZeroLeaveTheOriginalExactlyBetweenThem) {
+  const BSplineCurve original = circle();
+  const bspline::ArcLengthTable table(original, 256);
+  const ContourWave full = modifyContour(original, table, GetParam(), 12, 3.0, nullptr);
+  std::vector<double> caps(full.layout.peaks.size(), 1e300);
+  const std::size_t first = caps.size() / 3, last = caps.size() / 2;
+  for (std::size_t i = first; i <= last; ++i) caps[i] = 0.0;
+  const ContourWave wave = modifyContour(original, table, GetParam(), 12, 3.0, nullptr, caps);
+  const double begin = wave.parameters[first], end = wave.parameters[last];
+  ASSERT_LT(begin, end);
+  const Polyline dense = original.sample(20000);  // chords within 1e-6 px
+  const PolylineDistance distance(dense);
+  double largest = 0.0;
+  for (int i = 0; i <= 400; ++i) {
+    largest = std::max(largest, distance(wave.curve.pointAt(begin + (end - begin) * i / 400.0)));
+  }
+  EXPECT_LT(largest, 1e-4);  // a re-fit: 1e-2
+  EXPECT_TRUE(wave.curve.isClosed(1e-6));
+  for (std::size_t i = 0; i + 2 < first; ++i) {
+    EXPECT_NEAR(std::abs(radialOffset(wave.curve, wave.parameters[i])), 3.0, 0.15) << "peak " << i;
+  }
+  std::vector<double> parameters;
+  EXPECT_TRUE(findCrossings({wave.curve.sampleSpans(16, parameters)}).empty());
+}
 
 TEST(ContourWavesTest, SineIsSmoothWithItsExtremaAtThePeaks) {
   const ContourWave wave = waves(Waveform::Sine, 10, 2.0);

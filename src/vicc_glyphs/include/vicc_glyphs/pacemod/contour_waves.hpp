@@ -23,7 +23,9 @@
 //    6.14B), the two between follow the contour offset linearly from one corner's amplitude to
 //    the next (wave_strips.hpp), and an icon corner inside a strip splits it at its offset point;
 //    a long strip on a bend that one cubic cannot follow within 0.05 px is split at its middle
-//    (further C0 knots: degrees of freedom where the contour needs them).
+//    (further C0 knots: degrees of freedom where the contour needs them);
+// 4. between consecutive knot points translated by exactly 0 the curve is the original's
+//    pieces (original_splice.hpp).
 
 #include <memory>
 #include <vector>

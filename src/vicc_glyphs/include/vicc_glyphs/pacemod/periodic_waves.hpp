@@ -70,7 +70,8 @@ struct CurveWaveReport {
   double realised_amplitude_max_mm = 0.0;
   std::vector<PeakReduction> reductions;
   /// Crossings of this curve's polygon with itself or another curve that remain after the
-  /// repair rounds (0 in every bench case; reported, never hidden).
+  /// repair rounds (0 in every bench case; reported, never hidden). Crossings that the original
+  /// curves have themselves at the same place (contours that touch) are not counted.
   int unresolved_crossings = 0;
   std::string skipped;  ///< non-empty: why the curve was left unchanged
 };
