@@ -138,7 +138,11 @@ std::vector<ArcInterval> flatRuns(const std::vector<double>& parameters,
     while (j + 1 < count && translations[j + 1] == 0.0 && parameters[j + 1] > parameters[j]) ++j;
     std::size_t end = j;
     while (end > i && unmet[end]) --end;  // the curve must meet both ends
-    if (end > i) runs.push_back({parameters[i], parameters[end]});
+    // Increasing and disjoint: a run that starts behind the last one's end (a knot point moved
+    // onto a corner behind it) is left out rather than made an error.
+    if (end > i && (runs.empty() || parameters[i] >= runs.back().end)) {
+      runs.push_back({parameters[i], parameters[end]});
+    }
     i = std::max(end, i) + 1;
   }
   return runs;

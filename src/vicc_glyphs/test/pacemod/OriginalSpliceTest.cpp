@@ -34,6 +34,10 @@ TEST(OriginalSpliceTest, FlatRunsAreConsecutiveZeroTranslationsWithMetEnds) {
   // Parameters that do not increase (a knot point moved onto a corner behind it) end a run.
   EXPECT_EQ(runs(flatRuns({0, 1, 2, 1.5, 4}, {1, 0, 0, 0, 1}, std::vector<bool>(5, false))),
             (Runs{{1, 2}}));
+  // A run that would start before the previous one ends is left out (spliceOriginal needs
+  // increasing, disjoint runs).
+  EXPECT_EQ(runs(flatRuns({0, 1, 2, 1.5, 1.8, 4}, {1, 0, 0, 0, 0, 1}, std::vector<bool>(6, false))),
+            (Runs{{1, 2}}));
   EXPECT_THROW(flatRuns(parameters, {0, 0}, met), std::invalid_argument);
 }
 

@@ -17,7 +17,8 @@ namespace pacemod {
 
 /// The arc-length intervals between consecutive knot points that are all translated by 0:
 /// maximal runs of at least two entries with translations[i] == 0 and increasing parameters,
-/// whose two ends the curve meets (not `unmet`). The inputs are per knot point, in order.
+/// whose two ends the curve meets (not `unmet`); increasing and disjoint (a run that would start
+/// before the previous one ends is left out). The inputs are per knot point, in order.
 std::vector<ArcInterval> flatRuns(const std::vector<double>& parameters,
                                   const std::vector<double>& translations,
                                   const std::vector<bool>& unmet);
