@@ -68,36 +68,30 @@ bool inside(double u, const ArcInterval& interval) {
   return u > interval.begin && u < interval.end;
 }
 
-// The original's parts between the runs' ends, their knots mapped affinely onto the runs'
-// arc-length intervals.
-std::vector<Part> originalParts(const BSplineCurve& original, const bspline::ArcLengthTable& table,
-                                const std::vector<ArcInterval>& runs) {
-  std::vector<ArcInterval> spans;  // the runs as original parameters
+// The original's parts over `spans` (its parameters at the runs' ends), their knots mapped
+// affinely onto the runs' arc-length intervals.
+std::vector<Part> originalParts(const BSplineCurve& original, const std::vector<ArcInterval>& runs,
+                                const std::vector<ArcInterval>& spans) {
   std::vector<double> cuts;
-  for (const ArcInterval& run : runs) {
-    const ArcInterval span{snapToBreakpoint(original, table.parameterAt(run.begin)),
-                           snapToBreakpoint(original, table.parameterAt(run.end))};
-    spans.push_back(span);
-    cuts.insert(cuts.end(), {span.begin, span.end});
-  }
-  std::vector<Part> parts = splitAt(original, cuts, true);
-  std::vector<Part> kept;
+  for (const ArcInterval& span : spans) cuts.insert(cuts.end(), {span.begin, span.end});
+  const std::vector<Part> parts = splitAt(original, cuts, true);
+  std::vector<Part> joined;
   for (std::size_t r = 0; r < runs.size(); ++r) {
-    Part joined{runs[r].begin, runs[r].end, {}, {}, true};
+    Part run{runs[r].begin, runs[r].end, {}, {}, true};
     const double scale = (runs[r].end - runs[r].begin) / (spans[r].end - spans[r].begin);
     const auto map = [&](double u) { return runs[r].begin + (u - spans[r].begin) * scale; };
-    for (const Part& part : parts) {  // the run may span several parts: join them
+    for (const Part& part : parts) {  // the span may cover several parts: join them
       if (!inside(0.5 * (part.begin + part.end), spans[r])) continue;
-      if (!joined.points.empty()) {
-        joined.interior_knots.insert(joined.interior_knots.end(), 3, map(part.begin));
-        joined.points.pop_back();
+      if (!run.points.empty()) {
+        run.interior_knots.insert(run.interior_knots.end(), 3, map(part.begin));
+        run.points.pop_back();
       }
-      for (double knot : part.interior_knots) joined.interior_knots.push_back(map(knot));
-      joined.points.insert(joined.points.end(), part.points.begin(), part.points.end());
+      for (double knot : part.interior_knots) run.interior_knots.push_back(map(knot));
+      run.points.insert(run.points.end(), part.points.begin(), part.points.end());
     }
-    if (joined.points.size() >= 4) kept.push_back(std::move(joined));
+    joined.push_back(std::move(run));
   }
-  return kept;
+  return joined;
 }
 
 // A clamped cubic from parts that follow each other on the parameter axis; where the wave and
@@ -151,19 +145,24 @@ std::vector<ArcInterval> flatRuns(const std::vector<double>& parameters,
 BSplineCurve spliceOriginal(const BSplineCurve& wave, const BSplineCurve& original,
                             const bspline::ArcLengthTable& table,
                             const std::vector<ArcInterval>& runs_in) {
-  if (runs_in.empty()) return wave;
-  std::vector<ArcInterval> runs;
+  std::vector<ArcInterval> runs, spans;  // spans: the runs as the original's parameters
   std::vector<double> cuts;
   for (const ArcInterval& run : runs_in) {
-    const ArcInterval snapped{snapToBreakpoint(wave, run.begin), snapToBreakpoint(wave, run.end)};
-    if (!(snapped.end > snapped.begin) || snapped.begin < wave.domainBegin() ||
-        snapped.end > wave.domainEnd() || (!runs.empty() && snapped.begin < runs.back().end)) {
+    if (!(run.end >= run.begin) || run.begin < wave.domainBegin() || run.end > wave.domainEnd() ||
+        (!runs.empty() && run.begin < runs.back().end)) {
       throw std::invalid_argument("spliceOriginal: runs must be increasing and in the domain");
     }
+    const ArcInterval snapped{snapToBreakpoint(wave, run.begin), snapToBreakpoint(wave, run.end)};
+    const ArcInterval span{snapToBreakpoint(original, table.parameterAt(snapped.begin)),
+                           snapToBreakpoint(original, table.parameterAt(snapped.end))};
+    // Shorter than the snapping tolerance on either curve: nothing to splice.
+    if (!(snapped.end > snapped.begin) || !(span.end > span.begin)) continue;
     runs.push_back(snapped);
+    spans.push_back(span);
     cuts.insert(cuts.end(), {snapped.begin, snapped.end});
   }
-  std::vector<Part> parts = originalParts(original, table, runs);
+  if (runs.empty()) return wave;
+  std::vector<Part> parts = originalParts(original, runs, spans);
   for (Part& part : splitAt(wave, cuts, false)) {
     const double middle = 0.5 * (part.begin + part.end);
     if (std::none_of(runs.begin(), runs.end(),

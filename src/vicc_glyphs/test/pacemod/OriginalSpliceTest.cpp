@@ -61,6 +61,9 @@ TEST(OriginalSpliceTest, TheRunIsTheOriginalAndTheRestTheWave) {
   }
   EXPECT_EQ(spliced.multiplicity(12.0), 3);
   EXPECT_EQ(spliced.multiplicity(18.0), 3);
+  // A run shorter than the snapping tolerance leaves the wave as it is.
+  const BSplineCurve unchanged = spliceOriginal(wave, original, table, {{12, 12 + 1e-12}});
+  EXPECT_EQ(unchanged.knots(), wave.knots());
   EXPECT_THROW(spliceOriginal(wave, original, table, {{18, 12}}), std::invalid_argument);
   EXPECT_THROW(spliceOriginal(wave, original, table, {{10, 20}, {15, 25}}), std::invalid_argument);
   EXPECT_THROW(spliceOriginal(wave, original, table, {{10, 40}}), std::invalid_argument);
