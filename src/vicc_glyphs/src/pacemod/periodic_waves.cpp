@@ -139,17 +139,6 @@ void capAround(WavedContour& contour, double u, bool last_round) {
   contour.caps.back() = contour.caps.front() = std::min(contour.caps.front(), contour.caps.back());
 }
 
-// Where the segments of a crossing meet.
-Point2 crossingPoint(const std::vector<Polyline>& lines, const Crossing& crossing) {
-  const Point2& p = lines[crossing.a.line][crossing.a.segment];
-  const Point2 d = lines[crossing.a.line][crossing.a.segment + 1] - p;
-  const Point2& q = lines[crossing.b.line][crossing.b.segment];
-  const Point2 e = lines[crossing.b.line][crossing.b.segment + 1] - q;
-  const double denominator = d.x() * e.y() - d.y() * e.x();  // not 0: the crossing is proper
-  const Point2 w = q - p;
-  return p + d * ((w.x() * e.y() - w.y() * e.x()) / denominator);
-}
-
 // The crossings that the original contours have themselves: contours that touch (two circles
 // side by side) cross as polygons at the touching point, and a wave kept flat there keeps the
 // original's crossing. Per pair of lines (a < b) the points.

@@ -13,6 +13,12 @@ namespace {
 
 double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
+// The intersection of the lines through a0 a1 and b0 b1 (not parallel).
+Point2 intersection(const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1) {
+  const Point2 da = a1 - a0, db = b1 - b0;
+  return a0 + (cross(b0 - a0, db) / cross(da, db)) * da;
+}
+
 bool properlyCross(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
   const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
   const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
@@ -123,15 +129,20 @@ struct SegmentGrid {
 // the cell of its crossing point (clamped into both boxes against round-off), so exactly once.
 bool ownedByCell(const SegmentGrid& grid, const Point2& a0, const Point2& a1, const Point2& b0,
                  const Point2& b1, long long cell) {
-  const Point2 da = a1 - a0, db = b1 - b0;
-  const double t = cross(b0 - a0, db) / cross(da, db);
   const Point2 lo = a0.cwiseMin(a1).cwiseMax(b0.cwiseMin(b1));
   const Point2 hi = a0.cwiseMax(a1).cwiseMin(b0.cwiseMax(b1));
-  const Point2 point = (a0 + t * da).cwiseMax(lo).cwiseMin(hi);
+  const Point2 point = intersection(a0, a1, b0, b1).cwiseMax(lo).cwiseMin(hi);
   return grid.row(point.y()) * grid.nx + grid.column(point.x()) == cell;
 }
 
 }  // namespace
+
+Point2 crossingPoint(const std::vector<Polyline>& lines, const Crossing& crossing) {
+  const Polyline& a = lines[crossing.a.line];
+  const Polyline& b = lines[crossing.b.line];
+  return intersection(a[crossing.a.segment], a[crossing.a.segment + 1], b[crossing.b.segment],
+                      b[crossing.b.segment + 1]);
+}
 
 std::vector<Crossing> findCrossings(const std::vector<Polyline>& lines, double cell) {
   std::vector<char> closed(lines.size());

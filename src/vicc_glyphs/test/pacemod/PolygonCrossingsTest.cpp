@@ -79,6 +79,15 @@ TEST(PolygonCrossingsTest, NeighboursAndTouchingEndsDoNotCount) {
 
 // A far-flung polyline (e.g. a huge wave amplitude) coarsens the grid instead of allocating
 // or visiting ~10^13 cells.
+TEST(PolygonCrossingsTest, TheCrossingPointIsWhereTheTwoSegmentsMeet) {
+  const std::vector<Polyline> lines{{{0, 0}, {10, 0}, {10, 10}}, {{2, -1}, {4, 3}}};
+  const std::vector<Crossing> crossings = findCrossings(lines);
+  ASSERT_EQ(crossings.size(), 1u);
+  const Point2 point = crossingPoint(lines, crossings.front());
+  EXPECT_NEAR(point.x(), 2.5, 1e-12);  // (2, -1) + 0.25 (2, 4)
+  EXPECT_NEAR(point.y(), 0.0, 1e-12);
+}
+
 TEST(PolygonCrossingsTest, HugeExtentsCoarsenTheGrid) {
   const Polyline far{{0, 0}, {1e7, 1e7}, {1e7, 0}, {0, 1e7}, {0, 0}};
   const std::vector<Crossing> crossings = findCrossings({far}, 0.5);

@@ -26,5 +26,8 @@ struct Crossing {
 /// Throws std::invalid_argument for a cell that is not > 0 or coordinates whose extent overflows.
 std::vector<Crossing> findCrossings(const std::vector<Polyline>& lines, double cell = 8.0);
 
+/// Where the two segments of a crossing of `lines` (as found by findCrossings) meet.
+Point2 crossingPoint(const std::vector<Polyline>& lines, const Crossing& crossing);
+
 }  // namespace pacemod
 }  // namespace vicc_glyphs
