@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "vicc_glyphs/pacemod/offset_contour.hpp"
+#include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 #include "vicc_glyphs/pacemod/polyline.hpp"
 #include "vicc_glyphs/pacemod/wave_spec.hpp"
 
@@ -26,6 +27,70 @@ std::vector<BlurPoint> uniformBlur(const std::vector<BlurPoint>& points, double 
   return {{0.0, sum / points.size()}, {end, sum / points.size()}};
 }
 
+// Gap an inflated part keeps to a neighbouring contour (image pixels), doubled while the fit of
+// its isoline still crosses the neighbour, at most kClearanceTries times.
+constexpr double kClearancePx = 1.0;
+constexpr int kClearanceTries = 3;
+
+bool isClosed(const Polyline& line) {
+  return line.size() >= 5 && (line.front() - line.back()).norm() <= 1e-6;
+}
+
+// Whether more than half of the points of `a` lie inside the closed polyline `b`.
+bool mostlyInside(const Polyline& a, const Polyline& b) {
+  std::size_t inside = 0;
+  for (const Point2& p : a) inside += insidePolygon(p, b) ? 1 : 0;
+  return 2 * inside > a.size();
+}
+
+// The closed contours that the inflated contour `index` must stay clear of: those that neither
+// enclose it nor lie inside it (a part beside it, e.g. the cloud a rain drop hangs from).
+// Where the inflated region would reach into one of them, the other contour's side colour
+// (the mean that inflating gives each side) would be wrong there: a white halo in a grey cloud.
+std::vector<Polyline> neighbours(const std::vector<Polyline>& lines, int index) {
+  std::vector<Polyline> found;
+  for (int j = 0; j < static_cast<int>(lines.size()); ++j) {
+    if (j == index || !isClosed(lines[j])) continue;
+    if (mostlyInside(lines[index], lines[j]) || mostlyInside(lines[j], lines[index])) continue;
+    found.push_back(lines[j]);
+  }
+  return found;
+}
+
+// Whether the closed Bezier chain crosses one of `others`.
+bool crossesAny(const std::vector<Point2>& chain, const std::vector<Polyline>& others) {
+  DiffusionCurve curve;
+  curve.control_points = chain;
+  std::vector<Polyline> lines{sampleCurve(curve, 16)};
+  lines.insert(lines.end(), others.begin(), others.end());
+  for (const Crossing& crossing : findCrossings(lines)) {
+    if (crossing.a.line == 0 && crossing.b.line != 0) return true;
+  }
+  return false;
+}
+
+// The inflated (or shrunk) contour as a closed Bezier chain, or empty when nothing is left;
+// `limited`: an inflated part stopped short of a neighbour.
+std::vector<Point2> offsetChain(const Polyline& line, double offset_px,
+                                const std::vector<Polyline>& others, bool& limited) {
+  limited = false;
+  if (offset_px <= 0.0 || others.empty()) {
+    const Polyline isoline = offsetIsoline(line, offset_px);
+    return isoline.size() < 5 ? std::vector<Point2>{} : closedBezierFit(isoline);
+  }
+  const Polyline free = offsetIsoline(line, offset_px);
+  std::vector<Point2> chain;
+  double clearance = kClearancePx;
+  for (int attempt = 0; attempt < kClearanceTries; ++attempt, clearance *= 2.0) {
+    const Polyline isoline = offsetIsolineAvoiding(line, offset_px, others, clearance);
+    if (isoline.size() < 5) return {};
+    chain = closedBezierFit(isoline);
+    limited = std::abs(polylineArea(isoline)) < std::abs(polylineArea(free)) - 1e-6;
+    if (!crossesAny(chain, others)) break;
+  }
+  return chain;
+}
+
 }  // namespace
 
 std::vector<CurveInflateReport> inflateCurves(DiffusionCurveImage& image,
@@ -38,6 +103,8 @@ std::vector<CurveInflateReport> inflateCurves(DiffusionCurveImage& image,
   const std::string too_large = checkDisplacement("inflate offset", offset_mm, glyph_size_mm);
   if (!too_large.empty()) throw std::invalid_argument(too_large);
   const double px_per_mm = image.width / glyph_size_mm;
+  std::vector<Polyline> lines;  // of the image as it was: the neighbours' places
+  for (const DiffusionCurve& curve : image.curves) lines.push_back(sampleCurve(curve, 16));
   std::vector<CurveInflateReport> reports;
   for (int index : curves) {
     if (index < 0 || index >= static_cast<int>(image.curves.size())) {
@@ -47,16 +114,17 @@ std::vector<CurveInflateReport> inflateCurves(DiffusionCurveImage& image,
     CurveInflateReport report;
     report.curve = index;
     report.offset_mm = offset_mm;
-    const Polyline line = sampleCurve(curve, 16);
+    const Polyline& line = lines[index];
     report.area_before_mm2 = std::abs(polylineArea(line)) / (px_per_mm * px_per_mm);
-    if (line.size() < 5 || (line.front() - line.back()).norm() > 1e-6) {
+    if (!isClosed(line)) {
       report.skipped = "not a closed curve";
     } else {
-      const Polyline isoline = offsetIsoline(line, offset_mm * px_per_mm);
-      if (isoline.size() < 5) {
+      const std::vector<Point2> chain =
+          offsetChain(line, offset_mm * px_per_mm, neighbours(lines, index), report.limited);
+      if (chain.empty()) {
         report.skipped = "nothing is left of the region at this offset";
       } else {
-        curve.control_points = closedBezierFit(isoline);
+        curve.control_points = chain;
         const double end = curve.segmentCount();
         curve.left_colors = uniformSide(curve.left_colors, end);
         curve.right_colors = uniformSide(curve.right_colors, end);

@@ -37,10 +37,7 @@ Grid gridAround(const Polyline& contour, double margin, double scale) {
                    static_cast<int>(std::ceil((high.y() - low.y()) * scale)) + 1)};
 }
 
-// Signed distance in grid pixels: negative inside the contour's region, positive outside;
-// each side's transform measures to the nearest pixel centre of the other side, so half a
-// pixel is taken off to put the zero level on the boundary between them.
-cv::Mat signedDistance(const Polyline& contour, const Grid& grid) {
+std::vector<cv::Point> gridPolygon(const Polyline& contour, const Grid& grid) {
   std::vector<cv::Point> polygon;
   const double unit = 1 << kSubpixelBits;
   for (const Point2& p : contour) {
@@ -48,9 +45,16 @@ cv::Mat signedDistance(const Polyline& contour, const Grid& grid) {
     polygon.emplace_back(static_cast<int>(std::lround(g.x() * unit)),
                          static_cast<int>(std::lround(g.y() * unit)));
   }
+  return polygon;
+}
+
+// Signed distance in grid pixels: negative inside the contour's region, positive outside;
+// each side's transform measures to the nearest pixel centre of the other side, so half a
+// pixel is taken off to put the zero level on the boundary between them.
+cv::Mat signedDistance(const Polyline& contour, const Grid& grid) {
   cv::Mat inside = cv::Mat::zeros(grid.size, CV_8U);
-  cv::fillPoly(inside, std::vector<std::vector<cv::Point>>{polygon}, 255, cv::LINE_8,
-               kSubpixelBits);
+  cv::fillPoly(inside, std::vector<std::vector<cv::Point>>{gridPolygon(contour, grid)}, 255,
+               cv::LINE_8, kSubpixelBits);
   cv::Mat to_outside, to_inside;
   cv::distanceTransform(inside, to_outside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
   cv::distanceTransform(255 - inside, to_inside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
@@ -60,13 +64,8 @@ cv::Mat signedDistance(const Polyline& contour, const Grid& grid) {
   return field;
 }
 
-}  // namespace
-
-Polyline offsetIsoline(const Polyline& contour, double offset, double grid_scale) {
-  if (contour.size() < 4 || !std::isfinite(offset)) return {};
-  const Grid grid = gridAround(contour, std::max(offset, 0.0) + 3.0, grid_scale);
-  const cv::Mat field = signedDistance(contour, grid);
-  const cv::Mat region = field < offset * grid.scale;
+// The region's isoline traced on `grid` (see offsetIsoline).
+Polyline traceLargest(const cv::Mat& region, const Grid& grid, const Polyline& contour) {
   std::vector<std::vector<cv::Point>> traced;
   cv::findContours(region, traced, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
   const auto largest =
@@ -83,6 +82,36 @@ Polyline offsetIsoline(const Polyline& contour, double offset, double grid_scale
     std::reverse(result.begin(), result.end());
   }
   return result;
+}
+
+}  // namespace
+
+Polyline offsetIsoline(const Polyline& contour, double offset, double grid_scale) {
+  return offsetIsolineAvoiding(contour, offset, {}, 0.0, grid_scale);
+}
+
+Polyline offsetIsolineAvoiding(const Polyline& contour, double offset,
+                               const std::vector<Polyline>& obstacles, double clearance,
+                               double grid_scale) {
+  if (contour.size() < 4 || !std::isfinite(offset)) return {};
+  const Grid grid = gridAround(contour, std::max(offset, 0.0) + 3.0, grid_scale);
+  const cv::Mat field = signedDistance(contour, grid);
+  cv::Mat region = field < offset * grid.scale;
+  std::vector<std::vector<cv::Point>> polygons;
+  for (const Polyline& obstacle : obstacles) {
+    if (obstacle.size() >= 4) polygons.push_back(gridPolygon(obstacle, grid));
+  }
+  if (!polygons.empty()) {
+    cv::Mat free = cv::Mat(grid.size, CV_8U, cv::Scalar(255));
+    for (const auto& polygon : polygons) {  // one by one: overlapping obstacles stay filled
+      cv::fillPoly(free, std::vector<std::vector<cv::Point>>{polygon}, 0, cv::LINE_8,
+                   kSubpixelBits);
+    }
+    cv::Mat to_obstacle;
+    cv::distanceTransform(free, to_obstacle, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+    region = region & (to_obstacle > clearance * grid.scale);
+  }
+  return traceLargest(region, grid, contour);
 }
 
 std::vector<Point2> closedBezierFit(const Polyline& line, double knot_spacing) {

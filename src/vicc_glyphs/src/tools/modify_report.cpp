@@ -39,7 +39,8 @@ nlohmann::json inflateJson(const pacemod::CurveInflateReport& r) {
   nlohmann::json j{{"curve", r.curve},
                    {"offset_mm", r.offset_mm},
                    {"area_before_mm2", r.area_before_mm2},
-                   {"area_after_mm2", r.area_after_mm2}};
+                   {"area_after_mm2", r.area_after_mm2},
+                   {"limited_by_neighbours", r.limited}};
   if (!r.skipped.empty()) j["skipped"] = r.skipped;
   return j;
 }

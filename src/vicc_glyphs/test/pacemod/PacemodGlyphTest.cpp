@@ -6,10 +6,12 @@
 #include <string>
 
 #include "vicc_glyphs/io/load.hpp"
+#include "vicc_glyphs/io/svg_import.hpp"
 #include "vicc_glyphs/pacemod/curve_selection.hpp"
 #include "vicc_glyphs/pacemod/dashes.hpp"
 #include "vicc_glyphs/pacemod/inflate.hpp"
 #include "vicc_glyphs/pacemod/periodic_waves.hpp"
+#include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 #include "vicc_glyphs/pacemod/polyline.hpp"
 #include "vicc_glyphs/render/renderer.hpp"
 #include "wave_check.hpp"
@@ -166,6 +168,58 @@ TEST(PacemodGlyphTest, InflatingGrowsTheRegionByTheOffset) {
   // Beyond a quarter of the glyph's width an offset is refused before anything is changed.
   EXPECT_THROW(inflateCurves(image, {0}, -40.0, 50.0), std::invalid_argument);
   EXPECT_THROW(inflateCurves(image, {0}, 12.6, 50.0), std::invalid_argument);
+}
+
+// The curve of `image` whose region's area is nearest `area` (px^2).
+int curveWithArea(const DiffusionCurveImage& image, double area) {
+  int best = 0;
+  for (int i = 0; i < static_cast<int>(image.curves.size()); ++i) {
+    const double a = std::abs(polylineArea(sampleCurve(image.curves[i])));
+    const double b = std::abs(polylineArea(sampleCurve(image.curves[best])));
+    if (std::abs(a - area) < std::abs(b - area)) best = i;
+  }
+  return best;
+}
+
+// A drop hanging from a cloud (a circle touching a bar, two colours): inflated, it stops short
+// of the bar instead of reaching into it, where its white outside colour made a halo in the
+// bar. Inside an enclosing square it grows by the whole offset.
+TEST(PacemodGlyphTest, InflatingStopsShortOfANeighbourButNotOfAnEnclosingContour) {
+  SvgImportOptions options;
+  options.size = 256;  // 16 px per unit; 50 mm glyph: 5.12 px per mm
+  const std::string drop = "<circle cx='8' cy='11' r='3' fill='#1040a0'/>";
+  DiffusionCurveImage hanging = parseSvg(
+      "<svg xmlns='http://www.w3.org/2000/svg' viewBox='0 0 16 16'>"
+      "<rect x='2' y='2' width='12' height='6' fill='#708090'/>" +
+          drop + "</svg>",
+      options);
+  const double circle_area = M_PI * 48.0 * 48.0;
+  const int index = curveWithArea(hanging, circle_area);
+  const std::vector<Polyline> before{sampleCurve(hanging.curves[index])};
+  const std::vector<CurveInflateReport> reports = inflateCurves(hanging, {index}, 0.5, 50.0);
+  ASSERT_TRUE(reports[0].skipped.empty());
+  EXPECT_TRUE(reports[0].limited);
+  const Polyline grown = sampleCurve(hanging.curves[index]);
+  std::vector<Polyline> lines;
+  for (const DiffusionCurve& curve : hanging.curves) lines.push_back(sampleCurve(curve));
+  EXPECT_TRUE(findCrossings(lines).empty());
+  const Polyline& bar = lines[1 - index];
+  double nearest = 1e9;
+  for (const Point2& p : grown) nearest = std::min(nearest, distanceToPolyline(p, bar));
+  EXPECT_GT(nearest, 0.5);
+  EXPECT_GT(std::abs(polylineArea(grown)), circle_area + 0.5 * 2 * M_PI * 48.0 * 2.56);
+  // Enclosed by a square instead: not a neighbour, the full offset (A + P d + pi d^2).
+  DiffusionCurveImage enclosed = parseSvg(
+      "<svg xmlns='http://www.w3.org/2000/svg' viewBox='0 0 16 16'>"
+      "<rect x='0' y='0' width='16' height='16' fill='#708090'/>" +
+          drop + "</svg>",
+      options);
+  const int inner = curveWithArea(enclosed, circle_area);
+  const std::vector<CurveInflateReport> full = inflateCurves(enclosed, {inner}, 0.5, 50.0);
+  EXPECT_FALSE(full[0].limited);
+  const double d = 2.56, expected = circle_area + 2 * M_PI * 48.0 * d + M_PI * d * d;
+  EXPECT_NEAR(std::abs(polylineArea(sampleCurve(enclosed.curves[inner]))), expected,
+              0.01 * expected);
 }
 
 }  // namespace

@@ -20,6 +20,12 @@ namespace pacemod {
 /// left. `grid_scale` grid pixels per image pixel (the grid is capped at 2048 pixels a side).
 Polyline offsetIsoline(const Polyline& contour, double offset, double grid_scale = 4.0);
 
+/// offsetIsoline of the region less every point within `clearance` pixels of the regions of
+/// `obstacles` (closed polylines), so that an inflated part stops short of its neighbours.
+Polyline offsetIsolineAvoiding(const Polyline& contour, double offset,
+                               const std::vector<Polyline>& obstacles, double clearance,
+                               double grid_scale = 4.0);
+
 /// A closed polyline (first == last point) as a closed Bezier chain (3K+1 points) of a
 /// least-squares cubic B-spline with knots about `knot_spacing` pixels apart. Throws
 /// std::invalid_argument for fewer than 4 distinct points.
