@@ -43,14 +43,33 @@ bool mostlyInside(const Polyline& a, const Polyline& b) {
   return 2 * inside > a.size();
 }
 
-// The closed contours that the inflated contour `index` must stay clear of: those that neither
-// enclose it nor lie inside it (a part beside it, e.g. the cloud a rain drop hangs from).
-// Where the inflated region would reach into one of them, the other contour's side colour
-// (the mean that inflating gives each side) would be wrong there: a white halo in a grey cloud.
-std::vector<Polyline> neighbours(const std::vector<Polyline>& lines, int index) {
+struct Box {
+  Point2 low, high;
+};
+
+Box boxOf(const Polyline& line) {
+  Box box{line.front(), line.front()};
+  for (const Point2& p : line) {
+    box.low = box.low.cwiseMin(p);
+    box.high = box.high.cwiseMax(p);
+  }
+  return box;
+}
+
+// The closed contours within `reach` pixels of contour `index` that it must stay clear of when
+// inflated: those that neither enclose it nor lie inside it (a part beside it, e.g. the cloud a
+// rain drop hangs from). Where the inflated region reached into one of them, the region's side
+// colour (the mean that inflating gives each side) would be wrong there: a white halo in a grey
+// cloud.
+std::vector<Polyline> neighbours(const std::vector<Polyline>& lines, int index, double reach) {
+  const Box own = boxOf(lines[index]);
   std::vector<Polyline> found;
   for (int j = 0; j < static_cast<int>(lines.size()); ++j) {
     if (j == index || !isClosed(lines[j])) continue;
+    const Box other = boxOf(lines[j]);
+    if ((other.low - own.high).maxCoeff() > reach || (own.low - other.high).maxCoeff() > reach) {
+      continue;  // too far away to be reached
+    }
     if (mostlyInside(lines[index], lines[j]) || mostlyInside(lines[j], lines[index])) continue;
     found.push_back(lines[j]);
   }
@@ -69,26 +88,33 @@ bool crossesAny(const std::vector<Point2>& chain, const std::vector<Polyline>& o
   return false;
 }
 
-// The inflated (or shrunk) contour as a closed Bezier chain, or empty when nothing is left;
-// `limited`: an inflated part stopped short of a neighbour.
+constexpr const char* kNothingLeft = "nothing is left of the region at this offset";
+
+// The inflated (or shrunk) contour as a closed Bezier chain; empty, with the reason in
+// report.skipped, when there is none; report.limited when it stopped short of a neighbour.
 std::vector<Point2> offsetChain(const Polyline& line, double offset_px,
-                                const std::vector<Polyline>& others, bool& limited) {
-  limited = false;
+                                const std::vector<Polyline>& others, CurveInflateReport& report) {
   if (offset_px <= 0.0 || others.empty()) {
     const Polyline isoline = offsetIsoline(line, offset_px);
+    if (isoline.size() < 5) report.skipped = kNothingLeft;
     return isoline.size() < 5 ? std::vector<Point2>{} : closedBezierFit(isoline);
   }
   const Polyline free = offsetIsoline(line, offset_px);
-  std::vector<Point2> chain;
   double clearance = kClearancePx;
   for (int attempt = 0; attempt < kClearanceTries; ++attempt, clearance *= 2.0) {
     const Polyline isoline = offsetIsolineAvoiding(line, offset_px, others, clearance);
-    if (isoline.size() < 5) return {};
-    chain = closedBezierFit(isoline);
-    limited = std::abs(polylineArea(isoline)) < std::abs(polylineArea(free)) - 1e-6;
-    if (!crossesAny(chain, others)) break;
+    if (isoline.size() < 5) {
+      report.skipped = kNothingLeft;
+      return {};
+    }
+    std::vector<Point2> chain = closedBezierFit(isoline);
+    if (!crossesAny(chain, others)) {
+      report.limited = std::abs(polylineArea(isoline)) < std::abs(polylineArea(free)) - 1e-6;
+      return chain;
+    }
   }
-  return chain;
+  report.skipped = "inflating it would cross a neighbouring contour";
+  return {};
 }
 
 }  // namespace
@@ -119,11 +145,12 @@ std::vector<CurveInflateReport> inflateCurves(DiffusionCurveImage& image,
     if (!isClosed(line)) {
       report.skipped = "not a closed curve";
     } else {
-      const std::vector<Point2> chain =
-          offsetChain(line, offset_mm * px_per_mm, neighbours(lines, index), report.limited);
-      if (chain.empty()) {
-        report.skipped = "nothing is left of the region at this offset";
-      } else {
+      const double offset_px = offset_mm * px_per_mm;
+      const double reach = offset_px + kClearancePx * (1 << kClearanceTries);
+      const std::vector<Polyline> others =
+          offset_px > 0.0 ? neighbours(lines, index, reach) : std::vector<Polyline>{};
+      const std::vector<Point2> chain = offsetChain(line, offset_px, others, report);
+      if (!chain.empty()) {
         curve.control_points = chain;
         const double end = curve.segmentCount();
         curve.left_colors = uniformSide(curve.left_colors, end);
