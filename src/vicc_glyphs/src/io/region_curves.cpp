@@ -15,6 +15,8 @@ namespace {
 constexpr double kColorStep = 1e-3;
 // Polygon vertices turning by more than 30 degrees are corners of the refit curve.
 const double kCornerCosine = std::cos(30.0 * M_PI / 180.0);
+// A polygon edge at least this many sample spacings long is a straight edge of the icon.
+constexpr double kStraightEdgeSpacings = 8.0;
 
 struct EdgeKey {
   IntPoint from, to;
@@ -113,11 +115,23 @@ class CurveBuilder {
     }
     std::vector<int> breaks;
     std::vector<bool> corner(n, false);
+    // At a smooth end of a long straight edge: the edge's direction (else zero). Such a vertex
+    // is a break too, so that the edge is fitted as the exact line it is (fitted together with
+    // its neighbours it bulges by up to the tolerance, and shapes that touch it overlap), with
+    // the edge's direction as the tangent on both sides (a C1 join, no corner).
+    std::vector<Point2> straight(n, Point2::Zero());
     for (int i = 0; i < n; ++i) {
       const Point2 in = (p[i] - p[(i + n - 1) % n]).normalized();
       const Point2 out = (p[(i + 1) % n] - p[i]).normalized();
       corner[i] = !(in.dot(out) > kCornerCosine);
-      if (corner[i] || across[i] != across[(i + n - 1) % n]) breaks.push_back(i);
+      if (!corner[i] && (p[(i + 1) % n] - p[i]).norm() >= kStraightEdgeSpacings * spacing) {
+        straight[i] = out;
+      } else if (!corner[i] &&
+                 (p[i] - p[(i + n - 1) % n]).norm() >= kStraightEdgeSpacings * spacing) {
+        straight[i] = in;
+      }
+      const bool straight_end = straight[i] != Point2::Zero();
+      if (corner[i] || straight_end || across[i] != across[(i + n - 1) % n]) breaks.push_back(i);
     }
     if (breaks.empty()) breaks = {0, n / 2};  // a smooth loop of one colour
     DiffusionCurve curve;
@@ -138,8 +152,8 @@ class CurveBuilder {
           piece.push_back(a + (b - a) * (static_cast<double>(k) / steps));
       }
       const int added =
-          fitCubics(piece, tangent(p, corner, from, true), tangent(p, corner, to % n, false),
-                    tolerance, curve.control_points);
+          fitCubics(piece, tangent(p, corner, straight, from, true),
+                    tangent(p, corner, straight, to % n, false), tolerance, curve.control_points);
       right.push_back({segments + kColorStep, across[from]});
       segments += added;
       right.push_back({segments - kColorStep, across[from]});
@@ -151,13 +165,14 @@ class CurveBuilder {
 
  private:
   // Unit tangent at vertex v leaving it (`leaving`) or pointing back from it: one-sided at a
-  // corner, centred elsewhere.
-  static Point2 tangent(const std::vector<Point2>& p, const std::vector<bool>& corner, int v,
-                        bool leaving) {
+  // corner, along the edge at the end of a long straight edge, centred elsewhere.
+  static Point2 tangent(const std::vector<Point2>& p, const std::vector<bool>& corner,
+                        const std::vector<Point2>& straight, int v, bool leaving) {
     const int n = static_cast<int>(p.size());
     const Point2& next = p[(v + 1) % n];
     const Point2& previous = p[(v + n - 1) % n];
     if (corner[v]) return (leaving ? next - p[v] : previous - p[v]).normalized();
+    if (straight[v] != Point2::Zero()) return leaving ? straight[v] : Point2(-straight[v]);
     const Point2 centred = (next - previous).normalized();
     return leaving ? centred : Point2(-centred);
   }

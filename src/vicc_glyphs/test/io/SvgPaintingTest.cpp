@@ -139,6 +139,25 @@ TEST(SvgPainting, ALineTangentToARingsHoleLeavesNoStreak) {
   expectPicture(ring_and_line, 24, 256, expected, {}, 0.15);
 }
 
+TEST(SvgPainting, ACircleStandingOnAStraightEdgeLeavesNoWhiteDot) {
+  // Two reels on a camera body (like Bootstrap's camera-reels): circles of one paint touching
+  // each other and the body's straight top edge. The edge, fitted together with the rounded
+  // corners next to it, bulged 0.027 px upwards into the circle standing on it, so each shape's
+  // white outside fell inside the other: a white dot with a grey halo in the black.
+  const std::string camera =
+      "<svg xmlns='http://www.w3.org/2000/svg' viewBox='0 0 16 16'>"
+      "<path d='M6 3a3 3 0 1 1-6 0 3 3 0 0 1 6 0'/><path d='M12 3a3 3 0 1 1-6 0 3 3 0 0 1 6 0'/>"
+      "<path d='M2 6h12a2 2 0 0 1 2 2v6a2 2 0 0 1-2 2H2a2 2 0 0 1-2-2V8a2 2 0 0 1 2-2z'/></svg>";
+  const auto expected = [](double x, double y) {
+    const bool reel = std::hypot(x - 3.0, y - 3.0) <= 3.0 || std::hypot(x - 9.0, y - 3.0) <= 3.0;
+    const double corner =
+        std::hypot(std::max({2.0 - x, 0.0, x - 14.0}), std::max({8.0 - y, 0.0, y - 14.0}));
+    return reel || corner <= 2.0 ? kBlack : kWhite;
+  };
+  // Before: wrong pixels up to 1.0 (the dot where the right reel stands on the edge).
+  expectPicture(camera, 16, 512, expected);
+}
+
 TEST(SvgPainting, DashesSplitTheStroke) {
   const std::string dashed =
       svg("<path d='M2 12 H22' stroke='black' stroke-width='2' stroke-dasharray='4 2'/>");
