@@ -99,17 +99,18 @@ std::vector<Point2> offsetChain(const Polyline& line, double offset_px,
     if (isoline.size() < 5) report.skipped = kNothingLeft;
     return isoline.size() < 5 ? std::vector<Point2>{} : closedBezierFit(isoline);
   }
-  const Polyline free = offsetIsoline(line, offset_px);
   double clearance = kClearancePx;
   for (int attempt = 0; attempt < kClearanceTries; ++attempt, clearance *= 2.0) {
-    const Polyline isoline = offsetIsolineAvoiding(line, offset_px, others, clearance);
+    bool limited = false;
+    const Polyline isoline =
+        offsetIsolineAvoiding(line, offset_px, others, clearance, 4.0, &limited);
     if (isoline.size() < 5) {
       report.skipped = kNothingLeft;
       return {};
     }
     std::vector<Point2> chain = closedBezierFit(isoline);
     if (!crossesAny(chain, others)) {
-      report.limited = std::abs(polylineArea(isoline)) < std::abs(polylineArea(free)) - 1e-6;
+      report.limited = limited;
       return chain;
     }
   }

@@ -92,7 +92,8 @@ Polyline offsetIsoline(const Polyline& contour, double offset, double grid_scale
 
 Polyline offsetIsolineAvoiding(const Polyline& contour, double offset,
                                const std::vector<Polyline>& obstacles, double clearance,
-                               double grid_scale) {
+                               double grid_scale, bool* limited) {
+  if (limited) *limited = false;
   if (contour.size() < 4 || !std::isfinite(offset)) return {};
   const Grid grid = gridAround(contour, std::max(offset, 0.0) + 3.0, grid_scale);
   const cv::Mat field = signedDistance(contour, grid);
@@ -109,7 +110,9 @@ Polyline offsetIsolineAvoiding(const Polyline& contour, double offset,
     }
     cv::Mat to_obstacle;
     cv::distanceTransform(free, to_obstacle, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+    const int before = cv::countNonZero(region);
     region = region & (to_obstacle > clearance * grid.scale);
+    if (limited) *limited = cv::countNonZero(region) < before;
   }
   return traceLargest(region, grid, contour);
 }

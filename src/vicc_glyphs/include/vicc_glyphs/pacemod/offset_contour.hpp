@@ -21,10 +21,11 @@ namespace pacemod {
 Polyline offsetIsoline(const Polyline& contour, double offset, double grid_scale = 4.0);
 
 /// offsetIsoline of the region less every point within `clearance` pixels of the regions of
-/// `obstacles` (closed polylines), so that an inflated part stops short of its neighbours.
+/// `obstacles` (closed polylines), so that an inflated part stops short of its neighbours;
+/// `limited` (if given) says whether that took anything away.
 Polyline offsetIsolineAvoiding(const Polyline& contour, double offset,
                                const std::vector<Polyline>& obstacles, double clearance,
-                               double grid_scale = 4.0);
+                               double grid_scale = 4.0, bool* limited = nullptr);
 
 /// A closed polyline (first == last point) as a closed Bezier chain (3K+1 points) of a
 /// least-squares cubic B-spline with knots about `knot_spacing` pixels apart. Throws
