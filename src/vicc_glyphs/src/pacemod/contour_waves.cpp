@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "offset_fit.hpp"
@@ -191,11 +192,12 @@ GuardResult guardedAmplitude(const Placement& placement, double amplitude,
 // would make the strips next to it run back.
 struct GuardedPlacement {
   Placement placement;
-  GuardResult allowed;  ///< the guard's amplitude at `placement` (caps not applied)
+  GuardResult allowed;    ///< the guard's amplitude at `placement` (caps not applied)
+  bool cornered = false;  ///< `allowed` limited by bisectorCap
 };
 
-GuardedPlacement placeGuardedPeak(const ContourFrame& frame, std::size_t i, double amplitude,
-                                  const SkeletonGuard* guard, const std::vector<double>& caps) {
+GuardedPlacement placeOnCornerOrOwn(const ContourFrame& frame, std::size_t i, double amplitude,
+                                    const SkeletonGuard* guard, const std::vector<double>& caps) {
   const Placement placement = placePeak(frame, i, amplitude);
   const GuardResult allowed = guardedAmplitude(placement, amplitude, guard);
   if (!placement.at_miter) return {placement, allowed};
@@ -205,6 +207,45 @@ GuardedPlacement placeGuardedPeak(const ContourFrame& frame, std::size_t i, doub
   const Placement own = placePeak(frame, i, kept);
   if (!own.at_miter && own.corner >= 0) return {placement, allowed};
   return {own, guardedAmplitude(own, amplitude, guard)};
+}
+
+// Strips: the amplitude a knot point at its own offset point (no icon corner, no miter) may
+// keep near an icon corner inside whose angle its offset `w` falls. Within the swallowtail the
+// corner's bisector is the skeleton, so the thesis' half-space test is exact there: a' = the
+// offset that reaches the bisector at arc distance |d| from the corner, |d| / tan(turn / 2),
+// less epsilon. The guard's grid field misses this by up to its pixel of accuracy, enough at a
+// sharp tip (a star's, a lightning bolt's) for the offset point to land past the tip's other
+// side. Infinity where no corner limits it.
+double bisectorCap(const ContourFrame& frame, double l, double w, double epsilon) {
+  const double end = frame.layout.length;
+  double cap = std::numeric_limits<double>::infinity();
+  for (const ContourCorner& corner : frame.corners) {
+    const double swallowtail = corner.swallowtail(w);
+    if (swallowtail <= 0.0) continue;
+    double d = std::abs(l - corner.arc_length);
+    d = std::min(d, end - d);  // the closing corner lies at 0 and at L
+    if (d >= swallowtail) continue;
+    const double h = corner.half_turn_cosine;
+    const double sine = std::sqrt(std::max(0.0, 1.0 - h * h));
+    const double reach = sine > 0.0 ? d * h / sine : d;
+    cap = std::min(cap, std::max(0.0, reach - epsilon));
+  }
+  return cap;
+}
+
+GuardedPlacement placeGuardedPeak(const ContourFrame& frame, std::size_t i, double amplitude,
+                                  const SkeletonGuard* guard, const std::vector<double>& caps) {
+  GuardedPlacement result = placeOnCornerOrOwn(frame, i, amplitude, guard, caps);
+  if (!guard || !isStripWaveform(frame.layout.waveform) || result.placement.corner >= 0) {
+    return result;
+  }
+  const double w = frame.layout.peaks[i].sign * amplitude;
+  const double cap = bisectorCap(frame, result.placement.parameter, w, guard->epsilon());
+  if (cap < result.allowed.amplitude) {
+    result.allowed.amplitude = cap;
+    result.cornered = true;
+  }
+  return result;
 }
 
 // The original's points and normals that placePeak and smoothWave take, for every amplitude.
@@ -540,7 +581,7 @@ ContourWave modifyContour(const ContourFrame& frame, const BSplineCurve& origina
     wave.directions.push_back(placement.direction);
     wave.guarded.push_back(allowed);
     wave.capped.push_back(capped);
-    wave.cornered.push_back(false);
+    wave.cornered.push_back(guarded.cornered && !capped);
     wave.swallowed.push_back(false);
     wave.translations.push_back(allowed.amplitude / placement.growth);
   }

@@ -52,8 +52,10 @@ struct ContourWave {
   std::vector<Point2> directions;    ///< per layout peak: unit translation direction (sign * n)
   std::vector<GuardResult> guarded;  ///< per layout peak: the amplitude actually applied
   std::vector<bool> capped;          ///< per layout peak: limited by `caps` (crossing repair)
-  /// Per layout peak: limited at an icon corner (sine, rectangle): inside the corner's angle
+  /// Per layout peak: limited at an icon corner. Sine, rectangle: inside the corner's angle
   /// the knot point gets the distance where the sides' offset contour meets the bisector.
+  /// Triangle, sawtooth: a knot point beside the corner whose offset would fall past the
+  /// bisector gets the offset that reaches it, less the guard's epsilon.
   std::vector<bool> cornered;
   /// Per layout peak: its offset falls past the bisector of an icon corner (inside the angle)
   /// and the offset fit decides the curve there (sine, rectangle; no constraint of its own).

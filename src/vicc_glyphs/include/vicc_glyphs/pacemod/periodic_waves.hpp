@@ -46,7 +46,9 @@ struct PeakReduction {
   /// most kMaxRepairRounds times, the last time to 0; a crossing that outlives that flattens
   /// the knot points next to the flat stretch, kMaxFlatteningRounds times at most); "corner":
   /// a sine or rectangle knot point on an icon corner, moved into the corner's angle, where the
-  /// offset contour of its neighbours meets the bisector (nearer than the amplitude).
+  /// offset contour of its neighbours meets the bisector (nearer than the amplitude), or a
+  /// triangle or sawtooth knot point beside an icon corner whose offset would fall past the
+  /// corner's bisector: the half-space test done exactly there (the bisector is the skeleton).
   std::string reason;
 };
 

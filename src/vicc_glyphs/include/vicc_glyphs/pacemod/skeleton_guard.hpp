@@ -43,6 +43,9 @@ class SkeletonGuard {
   GuardResult limit(const Point2& knot, const Point2& direction, double requested,
                     double growth = 1.0) const;
 
+  /// The free space kept to the skeleton (image pixels).
+  double epsilon() const { return epsilon_; }
+
  private:
   const NearestCurvePoint& field_;
   double epsilon_;
