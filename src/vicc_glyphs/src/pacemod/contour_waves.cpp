@@ -45,6 +45,9 @@ constexpr double kMinRefinedSpan = 0.5;  // px: spans shorter than twice this st
 constexpr double kStripTolerance = 0.05;
 constexpr int kMaxStripSplits = 3;
 constexpr double kMinStripPiece = 2.0;
+// A strip that ends at an icon corner is split where it leaves the offset path by more than this
+// fraction of its larger end offset (a deviation that large reads as a lobe of its own).
+constexpr double kCornerStripDeviation = 0.5;
 // A knot point limited on an icon corner is reported when it keeps less than this of its
 // amplitude.
 constexpr double kCornerShortfall = 0.99;
@@ -434,8 +437,11 @@ struct StripBreak {
 // and b's), or, where that cubic leaves the contour's offset path by more than
 // kStripTolerance (a long strip on a bend: a sawtooth's flank at 2 waves/10 mm is 46 px long),
 // as two strips split at the middle (the offset interpolated there), recursively. A strip that
-// ends at an icon corner stays whole: split there, more knot points were reduced by the polygon
-// check than lobes gained (bench, session 20).
+// ends at an icon corner is split only where it leaves the path by more than
+// kCornerStripDeviation of its offset: split at kStripTolerance, more knot points were reduced
+// by the polygon check than lobes gained (bench, sessions 20 and 22); whole, a strip around an
+// asterisk arm's round end (Bootstrap cloud-snow-fill) cut it by 1.8 px at a 1 px amplitude, a
+// lobe pair too many.
 void appendStrip(const OffsetFrame& offsets, const StripBreak& a, const StripBreak& b, int depth,
                  std::vector<double>& knots, std::vector<Point2>& points) {
   const std::size_t first = points.size() - 1;
@@ -443,7 +449,12 @@ void appendStrip(const OffsetFrame& offsets, const StripBreak& a, const StripBre
   const double residual = detail::fitStrip(
       points, static_cast<int>(first),
       {a.arc_length, b.arc_length, a.offset, b.offset, a.corner, b.corner}, offsets);
-  if (residual <= kStripTolerance || depth == kMaxStripSplits || a.corner || b.corner ||
+  const double tolerance =
+      a.corner || b.corner
+          ? std::max(kStripTolerance,
+                     kCornerStripDeviation * std::max(std::abs(a.offset), std::abs(b.offset)))
+          : kStripTolerance;
+  if (residual <= tolerance || depth == kMaxStripSplits ||
       b.arc_length - a.arc_length < 2.0 * kMinStripPiece) {
     return;
   }
