@@ -29,26 +29,47 @@ struct CrossingCase {
   double amplitude_mm;
 };
 
+WaveSpec specOf(const CrossingCase& c) {
+  return {c.waveform, c.waves_per_10mm / 10.0, c.amplitude_mm};
+}
+
+DiffusionCurveImage benchIcon(const CrossingCase& c) {
+  return loadDiffusionCurves(std::string(VICC_GLYPHS_DATA_DIR) + "/icons/" + c.icon, 512);
+}
+
+DiffusionCurveImage parseAtBenchSize(const std::string& svg) {
+  SvgImportOptions options;
+  options.size = 512;
+  return parseSvg(svg, options);
+}
+
+// `original` waved and checked as the bench does it: all curves, 512 px = 50 mm.
+struct WavedGlyph {
+  DiffusionCurveImage image;
+  std::vector<CurveWaveReport> reports;
+  measure::GlyphCheck check;
+};
+
+WavedGlyph waveAsTheBench(const DiffusionCurveImage& original, const WaveSpec& spec) {
+  WavedGlyph glyph{original, {}, {}};
+  glyph.reports = applyWaves(glyph.image, selectCurves(glyph.image, {}), spec, 50.0);
+  glyph.check = measure::checkGlyph(original, glyph.image, glyph.reports, spec, 512 / 50.0);
+  return glyph;
+}
+
 class CrossingRegression : public ::testing::TestWithParam<CrossingCase> {};
 
 TEST_P(CrossingRegression, WavedIconHasNoNewCrossing) {
-  const CrossingCase& c = GetParam();
-  const DiffusionCurveImage original =
-      loadDiffusionCurves(std::string(VICC_GLYPHS_DATA_DIR) + "/icons/" + c.icon, 512);
-  DiffusionCurveImage image = original;
-  const WaveSpec spec{c.waveform, c.waves_per_10mm / 10.0, c.amplitude_mm};
-  const std::vector<CurveWaveReport> reports =
-      applyWaves(image, selectCurves(image, {}), spec, 50.0);
-  for (const CurveWaveReport& r : reports) EXPECT_EQ(r.unresolved_crossings, 0) << r.curve;
+  const WavedGlyph glyph = waveAsTheBench(benchIcon(GetParam()), specOf(GetParam()));
+  for (const CurveWaveReport& r : glyph.reports) EXPECT_EQ(r.unresolved_crossings, 0) << r.curve;
   std::vector<Polyline> lines;
-  for (const DiffusionCurve& curve : image.curves) lines.push_back(sampleCurve(curve, 16));
+  for (const DiffusionCurve& curve : glyph.image.curves) lines.push_back(sampleCurve(curve, 16));
   for (const Crossing& x : findCrossings(lines)) {
     ADD_FAILURE() << "curve " << x.a.line << " at segment " << x.a.segment / 16.0
                   << " crosses curve " << x.b.line << " at segment " << x.b.segment / 16.0
                   << " near (" << lines[x.a.line][x.a.segment].transpose() << ")";
   }
-  const measure::GlyphCheck check = measure::checkGlyph(original, image, reports, spec, 512 / 50.0);
-  EXPECT_EQ(check.new_crossings, 0);
+  EXPECT_EQ(glyph.check.new_crossings, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(BenchGrid, CrossingRegression,
@@ -72,20 +93,14 @@ TEST(TouchingContours, WavesStopAtTheTouchingPointsWithoutCrossing) {
       "<svg xmlns='http://www.w3.org/2000/svg' viewBox='0 0 16 16'>"
       "<path d='M6 3a3 3 0 1 1-6 0 3 3 0 0 1 6 0'/><path d='M12 3a3 3 0 1 1-6 0 3 3 0 0 1 6 0'/>"
       "<path d='M2 6h12a2 2 0 0 1 2 2v6a2 2 0 0 1-2 2H2a2 2 0 0 1-2-2V8a2 2 0 0 1 2-2z'/></svg>";
-  SvgImportOptions options;
-  options.size = 512;
-  const DiffusionCurveImage original = parseSvg(svg, options);
+  const DiffusionCurveImage original = parseAtBenchSize(svg);
   ASSERT_EQ(original.curves.size(), 3u);
-  DiffusionCurveImage image = original;
-  const WaveSpec spec{Waveform::Sine, 0.2, 0.4};
-  const std::vector<CurveWaveReport> reports =
-      applyWaves(image, selectCurves(image, {}), spec, 50.0);
-  for (const CurveWaveReport& r : reports) EXPECT_EQ(r.unresolved_crossings, 0) << r.curve;
-  const measure::GlyphCheck check = measure::checkGlyph(original, image, reports, spec, 512 / 50.0);
-  EXPECT_EQ(check.new_crossings, 0);
+  const WavedGlyph glyph = waveAsTheBench(original, {Waveform::Sine, 0.2, 0.4});
+  for (const CurveWaveReport& r : glyph.reports) EXPECT_EQ(r.unresolved_crossings, 0) << r.curve;
+  EXPECT_EQ(glyph.check.new_crossings, 0);
   int knot_points = 0;
-  for (const CurveWaveReport& r : reports) knot_points += r.knot_points;
-  EXPECT_LT(check.reduced_peaks, knot_points / 4) << "of " << knot_points;
+  for (const CurveWaveReport& r : glyph.reports) knot_points += r.knot_points;
+  EXPECT_LT(glyph.check.reduced_peaks, knot_points / 4) << "of " << knot_points;
 }
 
 // Sharp tips (strips): a knot point just before a tip whose own offset point falls past the
@@ -98,20 +113,14 @@ TEST(TouchingContours, WavesStopAtTheTouchingPointsWithoutCrossing) {
 class SharpTip : public ::testing::TestWithParam<CrossingCase> {};
 
 TEST_P(SharpTip, LobesBesideATipStayOnTheirSideOfIt) {
-  const CrossingCase& c = GetParam();
-  const DiffusionCurveImage original =
-      loadDiffusionCurves(std::string(VICC_GLYPHS_DATA_DIR) + "/icons/" + c.icon, 512);
-  DiffusionCurveImage image = original;
-  const WaveSpec spec{c.waveform, c.waves_per_10mm / 10.0, c.amplitude_mm};
-  const std::vector<CurveWaveReport> reports =
-      applyWaves(image, selectCurves(image, {}), spec, 50.0);
-  const measure::GlyphCheck check = measure::checkGlyph(original, image, reports, spec, 512 / 50.0);
+  const WavedGlyph glyph = waveAsTheBench(benchIcon(GetParam()), specOf(GetParam()));
+  const measure::GlyphCheck& check = glyph.check;
   EXPECT_EQ(check.full_lobes_ok, check.full_lobes);
   EXPECT_EQ(check.reduced_lobes_ok, check.reduced_lobes);
   for (const std::string& failure : check.failures) ADD_FAILURE() << failure;
   EXPECT_EQ(check.new_crossings, 0);
   int at_corners = 0;
-  for (const CurveWaveReport& r : reports) {
+  for (const CurveWaveReport& r : glyph.reports) {
     for (const PeakReduction& reduction : r.reductions) at_corners += reduction.reason == "corner";
   }
   EXPECT_GT(at_corners, 0);
@@ -143,17 +152,11 @@ TEST(RoundArmEnds, SawtoothStripsFollowThemWithTheRequestedCount) {
       " L7.5 8 L7.009 8.283 A.25 .25 0 0 0 7.259 8.717 L7.75 8.433 L7.75 9"
       " A.25 .25 0 0 0 8.25 9 L8.25 8.433 L8.741 8.717 A.25 .25 0 0 0 8.991 8.283 L8.5 8"
       " L8.991 7.717 A.25 .25 0 0 0 8.741 7.283 Z'/></svg>";
-  SvgImportOptions options;
-  options.size = 512;
-  const DiffusionCurveImage original = parseSvg(svg, options);
+  const DiffusionCurveImage original = parseAtBenchSize(svg);
   ASSERT_EQ(original.curves.size(), 1u);
   for (double amplitude_mm : {0.1, 0.4}) {
-    DiffusionCurveImage image = original;
-    const WaveSpec spec{Waveform::Sawtooth, 0.2, amplitude_mm};
-    const std::vector<CurveWaveReport> reports =
-        applyWaves(image, selectCurves(image, {}), spec, 50.0);
     const measure::GlyphCheck check =
-        measure::checkGlyph(original, image, reports, spec, 512 / 50.0);
+        waveAsTheBench(original, {Waveform::Sawtooth, 0.2, amplitude_mm}).check;
     EXPECT_EQ(check.unreduced_count_ok, check.unreduced_contours) << amplitude_mm << " mm";
     EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << amplitude_mm << " mm";
     for (const std::string& failure : check.failures) ADD_FAILURE() << failure;
