@@ -236,6 +236,8 @@ double bisectorCap(const ContourFrame& frame, double l, double w, double epsilon
   return cap;
 }
 
+// placeOnCornerOrOwn, and for a strip knot point at its own offset point the exact test at the
+// icon corners (bisectorCap).
 GuardedPlacement placeGuardedPeak(const ContourFrame& frame, std::size_t i, double amplitude,
                                   const SkeletonGuard* guard, const std::vector<double>& caps) {
   GuardedPlacement result = placeOnCornerOrOwn(frame, i, amplitude, guard, caps);
