@@ -44,6 +44,10 @@ ContourCorner cornerOf(double arc_length, const Point2& point, const Point2& bef
   return corner;
 }
 
+double halfTurnSine(double half_turn_cosine) {
+  return std::sqrt(std::max(0.0, 1.0 - half_turn_cosine * half_turn_cosine));
+}
+
 }  // namespace
 
 double ContourCorner::stretch(double w) const {
@@ -53,8 +57,13 @@ double ContourCorner::stretch(double w) const {
 
 double ContourCorner::swallowtail(double w) const {
   if (!inside(w)) return 0.0;
-  const double sine = std::sqrt(std::max(0.0, 1.0 - half_turn_cosine * half_turn_cosine));
-  return std::abs(w) * std::min(kMaxMiterLength, sine / std::max(half_turn_cosine, 1e-12));
+  return std::abs(w) * std::min(kMaxMiterLength,
+                                halfTurnSine(half_turn_cosine) / std::max(half_turn_cosine, 1e-12));
+}
+
+double ContourCorner::bisectorOffsetAt(double d) const {
+  const double sine = halfTurnSine(half_turn_cosine);
+  return sine > 0.0 ? d * half_turn_cosine / sine : d;
 }
 
 Point2 outwardNormalOf(const Point2& d, double area) {

@@ -228,10 +228,7 @@ double bisectorCap(const ContourFrame& frame, double l, double w, double epsilon
     double d = std::abs(l - corner.arc_length);
     d = std::min(d, end - d);  // the closing corner lies at 0 and at L
     if (d >= swallowtail) continue;
-    const double h = corner.half_turn_cosine;
-    const double sine = std::sqrt(std::max(0.0, 1.0 - h * h));
-    const double reach = sine > 0.0 ? d * h / sine : d;
-    cap = std::min(cap, std::max(0.0, reach - epsilon));
+    cap = std::min(cap, std::max(0.0, corner.bisectorOffsetAt(d) - epsilon));
   }
   return cap;
 }

@@ -48,6 +48,9 @@ struct ContourCorner {
   /// Arc length to either side within which offset points of the sides (by w) lie past the
   /// bisector: |w| tan(turn / 2) inside the angle, 0 outside.
   double swallowtail(double w) const;
+  /// The offset inside the angle whose offset points at arc distance `d` from the corner (on
+  /// either side) lie on the bisector: d / tan(turn / 2), not capped like the miter.
+  double bisectorOffsetAt(double d) const;
   /// True when `q`, an offset point of the side before (`side` = -1) or after (+1) the corner,
   /// lies past the bisector on the other side's half.
   bool pastBisector(const Point2& q, int side) const {
