@@ -18,10 +18,6 @@ int parseIndex(const std::string& item) {
   return std::stoi(item);
 }
 
-bool closed(const Polyline& line) {
-  return line.size() > 3 && (line.front() - line.back()).norm() < 1e-6;
-}
-
 }  // namespace
 
 CurveSelection CurveSelection::parse(const std::string& text) {
@@ -59,7 +55,7 @@ std::vector<int> selectCurves(const DiffusionCurveImage& image, const CurveSelec
       // A point in the middle of a segment, not a join shared with a touching contour.
       const Point2 probe = image.curves[i].pointAt(0.5);
       for (int j = 0; j < count && !enclosed; ++j) {
-        enclosed = j != i && closed(lines[j]) && insidePolygon(probe, lines[j]);
+        enclosed = j != i && isClosedPolyline(lines[j]) && insidePolygon(probe, lines[j]);
       }
     }
     if (!enclosed) result.push_back(i);

@@ -32,10 +32,6 @@ std::vector<BlurPoint> uniformBlur(const std::vector<BlurPoint>& points, double 
 constexpr double kClearancePx = 1.0;
 constexpr int kClearanceTries = 3;
 
-bool isClosed(const Polyline& line) {
-  return line.size() >= 5 && (line.front() - line.back()).norm() <= 1e-6;
-}
-
 // Whether more than half of the points of `a` lie inside the closed polyline `b`.
 bool mostlyInside(const Polyline& a, const Polyline& b) {
   std::size_t inside = 0;
@@ -65,7 +61,7 @@ std::vector<Polyline> neighbours(const std::vector<Polyline>& lines, int index, 
   const Box own = boxOf(lines[index]);
   std::vector<Polyline> found;
   for (int j = 0; j < static_cast<int>(lines.size()); ++j) {
-    if (j == index || !isClosed(lines[j])) continue;
+    if (j == index || !isClosedPolyline(lines[j])) continue;
     const Box other = boxOf(lines[j]);
     if ((other.low - own.high).maxCoeff() > reach || (own.low - other.high).maxCoeff() > reach) {
       continue;  // too far away to be reached
@@ -143,7 +139,7 @@ std::vector<CurveInflateReport> inflateCurves(DiffusionCurveImage& image,
     report.offset_mm = offset_mm;
     const Polyline& line = lines[index];
     report.area_before_mm2 = std::abs(polylineArea(line)) / (px_per_mm * px_per_mm);
-    if (!isClosed(line)) {
+    if (!isClosedPolyline(line)) {
       report.skipped = "not a closed curve";
     } else {
       const double offset_px = offset_mm * px_per_mm;

@@ -99,6 +99,10 @@ double polylineArea(const Polyline& line) {
   return 0.5 * area;
 }
 
+bool isClosedPolyline(const Polyline& line) {
+  return line.size() >= 5 && (line.front() - line.back()).norm() <= 1e-6;
+}
+
 bool insidePolygon(const Point2& point, const Polyline& line) {
   bool inside = false;
   for (std::size_t i = 0, j = line.size() - 1; i < line.size(); j = i++) {

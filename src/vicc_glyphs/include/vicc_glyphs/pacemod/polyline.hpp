@@ -35,6 +35,10 @@ class PolylineDistance {
 /// Shoelace area of a closed polyline (positive: clockwise on screen, y down).
 double polylineArea(const Polyline& line);
 
+/// True when `line` is a closed polygon: it ends where it starts and has at least 5 points (a
+/// sampled curve of at least one segment).
+bool isClosedPolyline(const Polyline& line);
+
 /// True when `point` lies inside the closed polygon `line` (even-odd rule).
 bool insidePolygon(const Point2& point, const Polyline& line);
 
