@@ -8,6 +8,7 @@
 #include "offset_fit.hpp"
 #include "vicc_glyphs/bspline/frenet_frame.hpp"
 #include "vicc_glyphs/pacemod/original_splice.hpp"
+#include "vicc_glyphs/pacemod/polyline.hpp"
 #include "vicc_glyphs/pacemod/sparse_fowler_bartels.hpp"
 #include "wave_strips.hpp"
 
@@ -225,8 +226,7 @@ double bisectorCap(const ContourFrame& frame, double l, double w, double epsilon
   for (const ContourCorner& corner : frame.corners) {
     const double swallowtail = corner.swallowtail(w);
     if (swallowtail <= 0.0) continue;
-    double d = std::abs(l - corner.arc_length);
-    d = std::min(d, end - d);  // the closing corner lies at 0 and at L
+    const double d = cyclicDistance(l, corner.arc_length, end);  // the closing corner: 0 and L
     if (d >= swallowtail) continue;
     cap = std::min(cap, std::max(0.0, corner.bisectorOffsetAt(d) - epsilon));
   }
@@ -340,9 +340,7 @@ int swallowingCorner(const ContourFrame& frame, const ContourWave& wave, std::si
   for (std::size_t c : {before, after}) {
     const ContourCorner& corner = frame.corners[c];
     if (!corner.inside(appliedOffset(wave, i))) continue;
-    double d = l - corner.arc_length;
-    if (d > 0.5 * end) d -= end;  // the closing corner lies at 0 and at L
-    if (d < -0.5 * end) d += end;
+    const double d = cyclicOffset(corner.arc_length, l, end);  // the closing corner: 0 and L
     if (std::abs(d) < (d < 0.0 ? stretches[c].first : stretches[c].second)) {
       return static_cast<int>(c);
     }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "vicc_glyphs/bspline/fitting.hpp"
+#include "vicc_glyphs/pacemod/polyline.hpp"
 #include "wave_strips.hpp"
 
 namespace vicc_glyphs {
@@ -182,8 +183,8 @@ bspline::BSplineCurve OffsetFit::fit(const Offset& offset,
     const Sample& s = samples_[i];
     Point2 q = s.point + offset(s.arc_length) * s.normal;
     if (s.corner >= 0) {
-      const double d = std::abs(s.arc_length - corners_[s.corner].arc_length);
-      const double distance = std::min(d, end - d);  // the closing corner is at 0 and at L
+      // The closing corner is at 0 and at L.
+      const double distance = cyclicDistance(s.arc_length, corners_[s.corner].arc_length, end);
       const double met = s.side < 0 ? meeting[s.corner].first : meeting[s.corner].second;
       const double most = s.side < 0 ? reach_[s.corner].first : reach_[s.corner].second;
       // Inside the angle the whole swallowed stretch has to be spread; outside, the arc takes

@@ -104,12 +104,6 @@ Polyline sampleWave(const ContourWave& wave, std::vector<double>& parameters) {
   return wave.curve.sampleSpans(kSamplesPerSpan, parameters);
 }
 
-// Cyclic arc-length distance between two points of a closed contour.
-double cyclicDistance(double a, double b, double length) {
-  const double d = std::abs(a - b);
-  return std::min(d, length - d);
-}
-
 // Halves the caps of the knot points within half a period of arc length `u` (cyclically), or
 // sets them to 0 in the last round. A crossing can persist with every knot point of that window
 // already at 0: the curve between knot points (a neighbouring lobe's flank overshooting into a

@@ -103,6 +103,18 @@ bool isClosedPolyline(const Polyline& line) {
   return line.size() >= 5 && (line.front() - line.back()).norm() <= 1e-6;
 }
 
+double cyclicOffset(double from, double to, double length) {
+  double d = to - from;
+  if (d > 0.5 * length) d -= length;
+  if (d < -0.5 * length) d += length;
+  return d;
+}
+
+double cyclicDistance(double a, double b, double length) {
+  const double d = std::abs(a - b);
+  return std::min(d, length - d);
+}
+
 bool insidePolygon(const Point2& point, const Polyline& line) {
   bool inside = false;
   for (std::size_t i = 0, j = line.size() - 1; i < line.size(); j = i++) {

@@ -29,6 +29,19 @@ TEST(PolylineTest, BucketedDistanceEqualsTheExhaustiveOne) {
   EXPECT_TRUE(std::isinf(PolylineDistance(empty)(Point2(1, 2))));
 }
 
+// Arc lengths on a closed contour of length 10: the shorter way round, across 0 = L as well.
+TEST(PolylineTest, CyclicOffsetTakesTheShorterWayRound) {
+  EXPECT_DOUBLE_EQ(cyclicOffset(2.0, 3.5, 10.0), 1.5);
+  EXPECT_DOUBLE_EQ(cyclicOffset(3.5, 2.0, 10.0), -1.5);
+  EXPECT_DOUBLE_EQ(cyclicOffset(9.5, 0.5, 10.0), 1.0);   // forwards past the closing point
+  EXPECT_DOUBLE_EQ(cyclicOffset(0.5, 9.5, 10.0), -1.0);  // backwards past it
+  EXPECT_DOUBLE_EQ(cyclicOffset(1.0, 5.0, 10.0), 4.0);
+  EXPECT_DOUBLE_EQ(cyclicOffset(1.0, 7.0, 10.0), -4.0);
+  EXPECT_DOUBLE_EQ(cyclicDistance(9.5, 0.5, 10.0), 1.0);
+  EXPECT_DOUBLE_EQ(cyclicDistance(0.0, 10.0, 10.0), 0.0);  // the closing point twice
+  EXPECT_DOUBLE_EQ(cyclicDistance(2.0, 7.0, 10.0), 5.0);
+}
+
 }  // namespace
 }  // namespace pacemod
 }  // namespace vicc_glyphs

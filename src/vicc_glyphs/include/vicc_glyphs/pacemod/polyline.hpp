@@ -39,6 +39,13 @@ double polylineArea(const Polyline& line);
 /// sampled curve of at least one segment).
 bool isClosedPolyline(const Polyline& line);
 
+/// Arc-length offset from `from` to `to` on a closed contour of the given length, the shorter way
+/// round: in [-length / 2, length / 2] (a point just past the closing point at 0 and L is near).
+double cyclicOffset(double from, double to, double length);
+
+/// The arc-length distance of two points of a closed contour: |cyclicOffset|.
+double cyclicDistance(double a, double b, double length);
+
 /// True when `point` lies inside the closed polygon `line` (even-odd rule).
 bool insidePolygon(const Point2& point, const Polyline& line);
 
