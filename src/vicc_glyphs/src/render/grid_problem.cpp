@@ -61,9 +61,18 @@ void fixUnreachedPixels(GridProblem& problem, const std::vector<double>& backgro
   const int n = problem.pixelCount();
   reached.assign(problem.fixed.begin(), problem.fixed.end());
   if (propagateByRasterPasses(problem, reached)) return;
+  // The search starts from the reached pixels linked to an unreached one: the rest have
+  // nothing left to reach.
   queue.clear();
   for (int p = 0; p < n; ++p) {
-    if (reached[p]) queue.push_back(p);
+    if (!reached[p]) continue;
+    const int x = p % w, y = p / w;
+    if ((problem.couples_right[p] && !reached[p + 1]) ||
+        (problem.couples_down[p] && !reached[p + w]) ||
+        (x > 0 && problem.couples_right[p - 1] && !reached[p - 1]) ||
+        (y > 0 && problem.couples_down[p - w] && !reached[p - w])) {
+      queue.push_back(p);
+    }
   }
   const auto visit = [&](int q) {
     if (!reached[q]) {

@@ -52,6 +52,31 @@ TEST(GridProblemTest, PixelsNoDirichletPixelReachesTakeTheBackground) {
   }
 }
 
+// A serpentine corridor of barrier walls (12 x 12 px, four corridors of three rows, turning at
+// the right, left and right end): its far end is linked to the coloured line at its start
+// only through three turns, which the two raster passes do not follow; the search must.
+TEST(GridProblemTest, PixelsReachedOnlyAlongASerpentineStayFree) {
+  DiffusionCurveImage image{12, 12, {}};
+  const auto wall = [](const Point2& from, const Point2& to) {
+    DiffusionCurve curve = lineCurve(from, to, Color::Zero(), Color::Zero());
+    curve.left_emits = curve.right_emits = false;
+    return curve;
+  };
+  image.curves.push_back(wall({-1, 3}, {11, 3}));  // open at column 11
+  image.curves.push_back(wall({1, 6}, {13, 6}));   // open at column 0
+  image.curves.push_back(wall({-1, 9}, {11, 9}));  // open at column 11
+  image.curves.push_back(lineCurve({1.8, -1}, {1.8, 2.5}, Color(1, 0, 0), Color(0, 0, 1)));
+  const GridProblem problem = assembleColorProblem(image, 12, 12, 1.0, Color(0, 1, 0));
+  for (int y = 3; y < 12; ++y) {
+    for (int x = 0; x < 12; ++x) {
+      const int p = y * 12 + x;
+      EXPECT_EQ(problem.fixed[p], 0) << x << ", " << y;  // not fixed to the background
+    }
+  }
+  EXPECT_EQ(problem.couples_down[2 * 12 + 5], 0);   // the first wall
+  EXPECT_EQ(problem.couples_down[2 * 12 + 11], 1);  // its opening
+}
+
 TEST(GridProblemTest, ThinWedgeTipTakesTheNearestSideNotAMix) {
   // A closed, thin wedge (white inside, red outside) whose tip is narrower than a pixel over
   // several columns: links there are crossed twice, once by each flank.
