@@ -53,11 +53,20 @@ bool propagateByRasterPasses(const GridProblem& problem,
   return all;
 }
 
+// Whether test(q) holds for a pixel q linked to pixel p, trying right, down, left and up in
+// that order and stopping at the first that passes.
+template <class Test>
+bool anyLinkedPixel(const GridProblem& problem, int p, Test&& test) {
+  const int w = problem.width;
+  return (problem.couples_right[p] && test(p + 1)) || (problem.couples_down[p] && test(p + w)) ||
+         (p % w > 0 && problem.couples_right[p - 1] && test(p - 1)) ||
+         (p >= w && problem.couples_down[p - w] && test(p - w));
+}
+
 // Fixes every free pixel that links cannot connect to a Dirichlet pixel to `background`.
 void fixUnreachedPixels(GridProblem& problem, const std::vector<double>& background,
                         render_detail::PixelVector<std::uint8_t>& reached,
                         std::vector<int>& queue) {
-  const int w = problem.width;
   const int n = problem.pixelCount();
   reached.assign(problem.fixed.begin(), problem.fixed.end());
   if (propagateByRasterPasses(problem, reached)) return;
@@ -66,26 +75,16 @@ void fixUnreachedPixels(GridProblem& problem, const std::vector<double>& backgro
   queue.clear();
   for (int p = 0; p < n; ++p) {
     if (!reached[p]) continue;
-    const int x = p % w, y = p / w;
-    if ((problem.couples_right[p] && !reached[p + 1]) ||
-        (problem.couples_down[p] && !reached[p + w]) ||
-        (x > 0 && problem.couples_right[p - 1] && !reached[p - 1]) ||
-        (y > 0 && problem.couples_down[p - w] && !reached[p - w])) {
-      queue.push_back(p);
-    }
+    if (anyLinkedPixel(problem, p, [&](int q) { return !reached[q]; })) queue.push_back(p);
   }
-  const auto visit = [&](int q) {
-    if (!reached[q]) {
-      reached[q] = 1;
-      queue.push_back(q);
-    }
-  };
   for (size_t head = 0; head < queue.size(); ++head) {
-    const int p = queue[head];
-    if (problem.couples_right[p]) visit(p + 1);
-    if (problem.couples_down[p]) visit(p + w);
-    if (p % w > 0 && problem.couples_right[p - 1]) visit(p - 1);
-    if (p >= w && problem.couples_down[p - w]) visit(p - w);
+    anyLinkedPixel(problem, queue[head], [&](int q) {
+      if (!reached[q]) {
+        reached[q] = 1;
+        queue.push_back(q);
+      }
+      return false;  // visit every linked pixel
+    });
   }
   for (int p = 0; p < n; ++p) {
     if (reached[p]) continue;
