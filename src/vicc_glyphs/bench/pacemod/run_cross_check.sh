@@ -41,8 +41,8 @@ kPerSet=24
 
 summary="$results/summary.md"
 {
-  echo "| set | waveform | glyphs | contours | count ok, unreduced | count ok, reduced (decidable) | undecidable | full lobes within 10 % | reduced knot points (by the polygon check) | new crossings | modify ms median |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| set | waveform | glyphs | contours | count ok, unreduced | count ok, reduced (decidable) | undecidable | full lobes within 10 % | reduced knot points (by the polygon check) | new crossings | new sharp turns | modify ms median |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
 } > "$summary"
 status=0
 for entry in "${sets[@]}"; do
@@ -72,7 +72,7 @@ for entry in "${sets[@]}"; do
     row="$(grep -E "^\| $waveform \|" "$out" | tail -1)"
     IFS='|' read -r -a cells <<< "$row"
     crossings="$(echo "${cells[13]}" | tr -d ' ')"
-    echo "| $name |${cells[1]}|${cells[2]}|${cells[3]}|${cells[4]}|${cells[5]}|${cells[6]}|${cells[7]}|${cells[12]}|${cells[13]}|${cells[14]}|" >> "$summary"
+    echo "| $name |${cells[1]}|${cells[2]}|${cells[3]}|${cells[4]}|${cells[5]}|${cells[6]}|${cells[7]}|${cells[12]}|${cells[13]}|${cells[14]}|${cells[15]}|" >> "$summary"
     [[ "$crossings" == "0" ]] || status=1
   done
 done

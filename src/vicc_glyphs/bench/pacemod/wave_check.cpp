@@ -104,6 +104,27 @@ int crossings(const DiffusionCurveImage& image) {
   return static_cast<int>(findCrossings(lines).size());
 }
 
+// Every place where a step of a curve's polyline turns by more than kSharpTurnDegrees against
+// the previous step (steps shorter than 1e-6 px skipped; a closed curve's seam included).
+std::vector<Point2> sharpTurns(const DiffusionCurveImage& image) {
+  const double limit = std::cos(kSharpTurnDegrees * M_PI / 180.0);
+  std::vector<Point2> turns;
+  for (const DiffusionCurve& curve : image.curves) {
+    const Polyline line = sampleCurve(curve, 16);
+    std::vector<std::pair<Point2, Point2>> steps;  // start point, unit direction
+    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+      const Point2 d = line[i + 1] - line[i];
+      if (d.norm() > 1e-6) steps.push_back({line[i], d.normalized()});
+    }
+    const bool closed = line.size() > 2 && (line.front() - line.back()).norm() < 1e-9;
+    for (std::size_t k = closed ? 0 : 1; k < steps.size(); ++k) {
+      const Point2& before = (k == 0 ? steps.back() : steps[k - 1]).second;
+      if (before.dot(steps[k].second) < limit) turns.push_back(steps[k].first);
+    }
+  }
+  return turns;
+}
+
 std::string lobeText(const CurveWaveReport& report, const Lobe& lobe, double length_px) {
   char text[160];
   std::snprintf(text, sizeof text, "curve %d, %s lobe at arc %.1f-%.1f px (%.1f, %.1f)",
@@ -213,6 +234,14 @@ GlyphCheck checkGlyph(const DiffusionCurveImage& original, const DiffusionCurveI
                  sampleCurve(modified.curves[report.curve], 16), report, spec, px_per_mm, check);
   }
   check.new_crossings = std::max(0, crossings(modified) - crossings(original));
+  const std::vector<Point2> before = sharpTurns(original);
+  for (const Point2& turn : sharpTurns(modified)) {
+    const bool known = std::any_of(before.begin(), before.end(), [&](const Point2& old) {
+      return (old - turn).norm() <= kSameTurnPx;
+    });
+    if (!known) check.sharp_turn_points.push_back(turn);
+  }
+  check.new_sharp_turns = static_cast<int>(check.sharp_turn_points.size());
   return check;
 }
 
@@ -230,6 +259,7 @@ void add(GlyphCheck& total, const GlyphCheck& part) {
   total.reduced_peaks += part.reduced_peaks;
   total.crossing_peaks += part.crossing_peaks;
   total.new_crossings += part.new_crossings;
+  total.new_sharp_turns += part.new_sharp_turns;
   total.worst_full_error = std::max(total.worst_full_error, part.worst_full_error);
   total.worst_reduced_error = std::max(total.worst_reduced_error, part.worst_reduced_error);
   total.full_errors.insert(total.full_errors.end(), part.full_errors.begin(),

@@ -1,6 +1,6 @@
 #pragma once
 // The per-glyph checks of the PACEMOD bench and its GoogleTest subset: wave counts, lobe
-// amplitudes against the applied amplitudes, and new polygon crossings.
+// amplitudes against the applied amplitudes, new polygon crossings and new sharp turns.
 //
 // A contour whose knot points all kept the requested amplitude must show exactly its whole
 // wave count of outward and of inward lobes, each within 10 % of the amplitude. Where
@@ -31,6 +31,12 @@ constexpr double kMinLobeThresholdPx = 0.2;
 /// one; in between the count is not decidable.
 constexpr double kInvisiblePx = 0.5 * kMinLobeThresholdPx;
 constexpr double kVisiblePx = 2.0 * kMinLobeThresholdPx;
+/// A sample step of the polylines (16 per Bezier segment) that turns by more than this against
+/// the one before is a sharp turn: a fold, a spike or a hook, which neither the lobes nor the
+/// crossings show (a curve that doubles back on itself need not cross itself).
+constexpr double kSharpTurnDegrees = 170.0;
+/// A sharp turn of the result within this distance of one of the original is not new (px).
+constexpr double kSameTurnPx = 1.0;
 
 struct GlyphCheck {
   int contours = 0;             ///< modified contours (wave count >= 1)
@@ -43,9 +49,11 @@ struct GlyphCheck {
   int full_lobes_ok = 0;        ///< |extreme - expected| <= 10 % of expected
   int reduced_lobes = 0;        ///< lobes around reduced knot points (rated against those)
   int reduced_lobes_ok = 0;
-  int reduced_peaks = 0;   ///< knot points self-intersection prevention shortened
-  int crossing_peaks = 0;  ///< of those: by the polygon check (reason "crossing")
-  int new_crossings = 0;   ///< polygon crossings in the result that the original did not have
+  int reduced_peaks = 0;    ///< knot points self-intersection prevention shortened
+  int crossing_peaks = 0;   ///< of those: by the polygon check (reason "crossing")
+  int new_crossings = 0;    ///< polygon crossings in the result that the original did not have
+  int new_sharp_turns = 0;  ///< sharp turns of the result not within kSameTurnPx of the original's
+  std::vector<Point2> sharp_turn_points;  ///< where (the new ones)
   double worst_full_error = 0.0;
   double worst_reduced_error = 0.0;
   std::vector<double> full_errors;     ///< relative amplitude error of every rated full lobe

@@ -62,6 +62,38 @@ INSTANTIATE_TEST_SUITE_P(Pacemod, IconWaves,
                          ::testing::Values(Waveform::Sine, Waveform::Triangle, Waveform::Sawtooth,
                                            Waveform::Rectangle));
 
+// The closed polyline through `corners` as a chain of straight cubic Beziers.
+DiffusionCurve straightChain(std::vector<Point2> corners) {
+  corners.push_back(corners.front());
+  DiffusionCurve curve;
+  curve.control_points.push_back(corners.front());
+  for (std::size_t k = 0; k + 1 < corners.size(); ++k) {
+    const Point2 a = corners[k], b = corners[k + 1];
+    curve.control_points.insert(curve.control_points.end(),
+                                {a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b});
+  }
+  return curve;
+}
+
+// A fold does not cross anything: only the sharp-turn count shows a side that runs 5 px on,
+// back along itself and on again (two turns of 180 degrees), while the square's corners (90
+// degrees) and the original's own spike (kept where it was) are not new.
+TEST(PacemodGlyphTest, FoldsAreCountedAsNewSharpTurns) {
+  DiffusionCurveImage original;
+  original.width = original.height = 100;
+  original.curves = {straightChain({{20, 20}, {80, 20}, {80, 80}, {20, 80}}),
+                     straightChain({{90, 10}, {98, 10}, {90, 10.5}})};
+  DiffusionCurveImage folded = original;
+  folded.curves[0] =
+      straightChain({{20, 20}, {50, 20}, {55, 20}, {50, 20.001}, {80, 20}, {80, 80}, {20, 80}});
+  const measure::GlyphCheck check = measure::checkGlyph(original, folded, {}, WaveSpec{}, 2.0);
+  EXPECT_EQ(check.new_crossings, 0);
+  ASSERT_EQ(check.new_sharp_turns, 2);
+  EXPECT_NEAR(check.sharp_turn_points[0].x(), 55.0, 1e-9);
+  EXPECT_NEAR(check.sharp_turn_points[1].x(), 50.0, 1e-9);
+  EXPECT_EQ(measure::checkGlyph(original, original, {}, WaveSpec{}, 2.0).new_sharp_turns, 0);
+}
+
 TEST(PacemodGlyphTest, InvalidParametersAreRejectedNamingThem) {
   DiffusionCurveImage image = loadDiffusionCurves(kIcons + "heart.svg", 128);
   auto message = [&](const WaveSpec& spec, double size_mm, std::vector<int> curves) {
