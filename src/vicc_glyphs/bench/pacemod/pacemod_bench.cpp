@@ -175,7 +175,7 @@ namespace cli = vicc_common::cli;
 
 const std::vector<cli::OptionSpec> kOptionSpecs = {
     {"quick", "", "one frequency (4 waves/10 mm) and one amplitude (0.5 mm)"},
-    {"verbose", "", "list every glyph and lobe that fails a check"},
+    {"verbose", "", "list every glyph and lobe that fails a check, and new sharp turns"},
     {"no-render", "", "checks only, no rendering (faster searches for failures)"},
     {"opencv-labels", "", "OpenCV's labelled distance transform for the skeleton guard"},
     {"waveform", "W", "only this waveform: sine, triangle, sawtooth or rectangle"},
