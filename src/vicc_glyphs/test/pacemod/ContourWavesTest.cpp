@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
+#include "../support/straight_chain.hpp"
 #include "vicc_glyphs/bspline/bezier_conversion.hpp"
 #include "vicc_glyphs/pacemod/contour_waves.hpp"
 #include "vicc_glyphs/pacemod/polygon_crossings.hpp"
@@ -121,14 +121,8 @@ TEST(ContourWavesTest, SineIsSmoothWithItsExtremaAtThePeaks) {
 
 // A 200 x 200 square (straight Bezier segments, C0 corners), clockwise on screen.
 // The closed polygon through `corners` as straight cubic Beziers.
-BSplineCurve polygon(std::vector<Point2> corners) {
-  corners.push_back(corners.front());
-  std::vector<Point2> p{corners[0]};
-  for (std::size_t k = 0; k + 1 < corners.size(); ++k) {
-    const Point2 a = corners[k], b = corners[k + 1];
-    p.insert(p.end(), {a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b});
-  }
-  return bspline::bezierChainToBSpline(p).curve;
+BSplineCurve polygon(const std::vector<Point2>& corners) {
+  return bspline::bezierChainToBSpline(test::closedStraightChain(corners)).curve;
 }
 
 BSplineCurve square() { return polygon({{50, 50}, {250, 50}, {250, 250}, {50, 250}}); }
@@ -267,17 +261,6 @@ TEST(ContourWavesTest, AStripKnotPointCappedBelowItsMiterTakesItsOwnOffsetPoint)
   EXPECT_TRUE(findCrossings({wave.curve.sampleSpans(16, parameters)}).empty());
 }
 
-// Distance of `p` from the boundary of the closed polygon through `corners`.
-double distanceFromPolygon(const std::vector<Point2>& corners, const Point2& p) {
-  double nearest = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < corners.size(); ++k) {
-    const Point2 a = corners[k], b = corners[(k + 1) % corners.size()];
-    const double t = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
-    nearest = std::min(nearest, (a + t * (b - a) - p).norm());
-  }
-  return nearest;
-}
-
 // An isosceles triangle with a 36-degree tip (a star's) and rectangle waves of 1 px at 4 to 20
 // waves: outside the tip's angle a plateau rounds it on an arc of radius 1, inside it runs into
 // the miter, 1 px from both sides. With one cubic span from each corner to the next plateau
@@ -287,6 +270,7 @@ TEST(ContourWavesTest, RectanglePlateausStayAtTheirAmplitudeAroundASharpTip) {
   const double height = 100.0 / std::tan(18.0 * M_PI / 180.0);
   const std::vector<Point2> corners{{150, 300 - height}, {250, 300}, {50, 300}};
   const BSplineCurve original = polygon(corners);
+  const Polyline outline{corners[0], corners[1], corners[2], corners[0]};
   const bspline::ArcLengthTable table(original, 256);
   for (int count = 4; count <= 20; ++count) {
     const ContourWave wave =
@@ -294,7 +278,7 @@ TEST(ContourWavesTest, RectanglePlateausStayAtTheirAmplitudeAroundASharpTip) {
     double farthest = 0.0;
     for (int i = 0; i <= 20000; ++i) {
       const Point2 p = wave.curve.pointAt(wave.curve.domainEnd() * i / 20000.0);
-      farthest = std::max(farthest, distanceFromPolygon(corners, p));
+      farthest = std::max(farthest, distanceToPolyline(p, outline));
     }
     EXPECT_LT(farthest, 1.08) << count << " waves";
     EXPECT_GT(farthest, 0.99) << count << " waves";

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "../support/straight_chain.hpp"
 #include "vicc_glyphs/io/load.hpp"
 #include "vicc_glyphs/io/svg_import.hpp"
 #include "vicc_glyphs/pacemod/curve_selection.hpp"
@@ -62,16 +63,10 @@ INSTANTIATE_TEST_SUITE_P(Pacemod, IconWaves,
                          ::testing::Values(Waveform::Sine, Waveform::Triangle, Waveform::Sawtooth,
                                            Waveform::Rectangle));
 
-// The closed polyline through `corners` as a chain of straight cubic Beziers.
-DiffusionCurve straightChain(std::vector<Point2> corners) {
-  corners.push_back(corners.front());
+// The closed polygon through `corners` as a curve of straight cubic Beziers.
+DiffusionCurve straightChain(const std::vector<Point2>& corners) {
   DiffusionCurve curve;
-  curve.control_points.push_back(corners.front());
-  for (std::size_t k = 0; k + 1 < corners.size(); ++k) {
-    const Point2 a = corners[k], b = corners[k + 1];
-    curve.control_points.insert(curve.control_points.end(),
-                                {a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b});
-  }
+  curve.control_points = test::closedStraightChain(corners);
   return curve;
 }
 
