@@ -119,12 +119,12 @@ TEST(ContourWavesTest, SineIsSmoothWithItsExtremaAtThePeaks) {
             1e-6);
 }
 
-// A 200 x 200 square (straight Bezier segments, C0 corners), clockwise on screen.
 // The closed polygon through `corners` as straight cubic Beziers.
 BSplineCurve polygon(const std::vector<Point2>& corners) {
   return bspline::bezierChainToBSpline(test::closedStraightChain(corners)).curve;
 }
 
+// A 200 x 200 square (straight Bezier segments, C0 corners), clockwise on screen.
 BSplineCurve square() { return polygon({{50, 50}, {250, 50}, {250, 250}, {50, 250}}); }
 
 // Strips (or flanks) whose ends lie well inside one side of the square: far from its corners,
