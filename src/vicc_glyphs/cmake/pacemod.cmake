@@ -17,6 +17,7 @@ add_library(vicc_glyphs_pacemod
   src/pacemod/curve_selection.cpp
   src/pacemod/sparse_fowler_bartels.cpp
   src/pacemod/contour_corners.cpp
+  src/pacemod/contour_teeth.cpp
   src/pacemod/wave_strips.cpp
   src/pacemod/offset_fit.cpp
   src/pacemod/original_splice.cpp
@@ -68,6 +69,7 @@ if(CATKIN_ENABLE_TESTING)
     test/pacemod/SkeletonGuardTest.cpp
     test/pacemod/ContourWavesTest.cpp
     test/pacemod/OriginalSpliceTest.cpp
+    test/pacemod/ContourTeethTest.cpp
     test/pacemod/OffsetContourTest.cpp
     test/pacemod/PolylineTest.cpp
     test/pacemod/PolygonCrossingsTest.cpp

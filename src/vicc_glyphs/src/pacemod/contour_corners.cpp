@@ -7,12 +7,7 @@ namespace vicc_glyphs {
 namespace pacemod {
 namespace {
 
-// Joins turning by less than this are smooth (the B-spline conversion makes them C1).
-const double kSmoothCosine = std::cos(3.5 * M_PI / 180.0);
-// Corners closer than this (px of arc length: a sub-pixel step or tooth of the imported
-// polygon, invisible at the rendered size) are one corner that turns by both, or none if their
-// turns cancel.
-constexpr double kOneCorner = 0.5;
+const double kSmoothCosine = std::cos(kSmoothJoinDegrees * M_PI / 180.0);
 
 // Unit tangent (in the direction of travel) of the side after (`step` +1) or before (-1) the
 // de Boor point `from` of a clamped cubic that passes through it (a C0 corner): the direction
@@ -92,7 +87,7 @@ std::vector<ContourCorner> contourCorners(const bspline::BSplineCurve& contour,
     const Point2 in = polygonDirection(points, c, -1), out = polygonDirection(points, c, 1);
     if (!(in.norm() > 0.0 && out.norm() > 0.0)) continue;
     const double l = table.lengthAt(b);
-    if (!corners.empty() && l - corners.back().arc_length < kOneCorner) {
+    if (!corners.empty() && l - corners.back().arc_length < kOneCornerPx) {
       const ContourCorner& previous = corners.back();
       corners.back() =
           cornerOf(previous.arc_length, previous.point, previous.tangent_before, out, area);

@@ -9,6 +9,7 @@
 
 #include "vicc_glyphs/bspline/arc_length.hpp"
 #include "vicc_glyphs/bspline/spline_diffusion_curve.hpp"
+#include "vicc_glyphs/pacemod/contour_teeth.hpp"
 #include "vicc_glyphs/pacemod/contour_waves.hpp"
 #include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 #include "vicc_glyphs/pacemod/polyline.hpp"
@@ -80,7 +81,7 @@ std::unique_ptr<WavedContour> prepare(const DiffusionCurve& curve, int index,
     return nullptr;
   }
   std::unique_ptr<WavedContour> contour(new WavedContour{
-      bspline::toSplineDiffusionCurve(curve), nullptr, nullptr, nullptr, {}, report});
+      bspline::toSplineDiffusionCurve(withoutTeeth(curve)), nullptr, nullptr, nullptr, {}, report});
   contour->table = std::make_unique<bspline::ArcLengthTable>(contour->spline.geometry);
   const double length = contour->table->totalLength();
   report.arc_length_mm = length / context.px_per_mm;

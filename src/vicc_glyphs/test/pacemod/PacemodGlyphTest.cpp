@@ -89,6 +89,28 @@ TEST(PacemodGlyphTest, FoldsAreCountedAsNewSharpTurns) {
   EXPECT_EQ(measure::checkGlyph(original, original, {}, WaveSpec{}, 2.0).new_sharp_turns, 0);
 }
 
+// MDI's weather-pouring steps 0.2 px back and forth three times along its cloud
+// (`...20,13.72V13.73C...`). Before such steps were taken out, the contour's normals there
+// pointed along it and threw the waves out sideways: a 1 px spike at a rectangle plateau's end
+// (4.59 px for 4.10), a triangle's tip cut to 0.89 px for 1.02.
+TEST(PacemodGlyphTest, SubPixelStepsOfAnIconLeaveNoSpike) {
+  const DiffusionCurveImage original = loadDiffusionCurves(kIcons + "weather-pouring.svg", 512);
+  for (const WaveSpec& spec :
+       {WaveSpec{Waveform::Rectangle, 1.2, 0.4}, WaveSpec{Waveform::Triangle, 0.8, 0.1}}) {
+    DiffusionCurveImage image = original;
+    const std::vector<CurveWaveReport> reports =
+        applyWaves(image, selectCurves(image, {}), spec, 50.0);
+    const measure::GlyphCheck check =
+        measure::checkGlyph(original, image, reports, spec, 512 / 50.0);
+    std::string failures;
+    for (const std::string& failure : check.failures) failures += "\n  " + failure;
+    EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << waveformName(spec.waveform) << failures;
+    EXPECT_GT(check.full_lobes, 400);
+    EXPECT_EQ(check.new_crossings, 0);
+    EXPECT_EQ(check.new_sharp_turns, 0) << waveformName(spec.waveform);
+  }
+}
+
 TEST(PacemodGlyphTest, InvalidParametersAreRejectedNamingThem) {
   DiffusionCurveImage image = loadDiffusionCurves(kIcons + "heart.svg", 128);
   auto message = [&](const WaveSpec& spec, double size_mm, std::vector<int> curves) {

@@ -16,6 +16,13 @@
 namespace vicc_glyphs {
 namespace pacemod {
 
+/// Joins turning by less than this (degrees) are smooth (the B-spline conversion makes them C1).
+constexpr double kSmoothJoinDegrees = 3.5;
+/// Corners closer than this (px of arc length: a sub-pixel step or tooth of the imported
+/// polygon, invisible at the rendered size) are one corner that turns by both, or none if their
+/// turns cancel.
+constexpr double kOneCornerPx = 0.5;
+
 /// Inside an angle sharper than this the miter is capped at this length (turns above 165
 /// degrees: spikes thinner than 15 degrees); there the corner point stays nearer than w.
 constexpr double kMaxMiterLength = 8.0;

@@ -1,0 +1,76 @@
+#include "vicc_glyphs/pacemod/contour_teeth.hpp"
+
+#include <cmath>
+
+#include "vicc_glyphs/pacemod/contour_corners.hpp"
+
+namespace vicc_glyphs {
+namespace pacemod {
+namespace {
+
+constexpr double kNoLength = 1e-9;
+
+// Unit direction from the anchor points[from] towards the first point (`step` +1) or away from
+// the last point (-1) of its segment that differs from it (zero-length handles skipped); zero
+// if the segment has no length.
+Point2 directionAt(const std::vector<Point2>& points, int from, int step) {
+  for (int k = 1; k <= 3; ++k) {
+    const Point2 d = step * (points[from + step * k] - points[from]);
+    if (d.norm() > kNoLength) return d.normalized();
+  }
+  return Point2::Zero();
+}
+
+double polygonLength(const std::vector<Point2>& points, int segment) {
+  double length = 0.0;
+  for (int k = 0; k < 3; ++k)
+    length += (points[3 * segment + k + 1] - points[3 * segment + k]).norm();
+  return length;
+}
+
+// Segment j (0 < j < K - 1) is a tooth: shorter than kOneCornerPx between two sharp joins.
+bool isTooth(const std::vector<Point2>& points, int j, double smooth_cosine) {
+  if (polygonLength(points, j) >= kOneCornerPx) return false;
+  const int a = 3 * j, b = 3 * j + 3;
+  const Point2 before = directionAt(points, a, -1), after = directionAt(points, b, 1);
+  const Point2 leaving = directionAt(points, a, 1), arriving = directionAt(points, b, -1);
+  if (before.isZero() || after.isZero() || leaving.isZero() || arriving.isZero()) return false;
+  return before.dot(leaving) < smooth_cosine && arriving.dot(after) < smooth_cosine;
+}
+
+// Positions on segment j go to its start, later ones back by one segment.
+template <typename Points>
+void dropSegment(Points& points, int j) {
+  for (auto& point : points) {
+    if (point.position > j + 1) {
+      point.position -= 1.0;
+    } else if (point.position > j) {
+      point.position = j;
+    }
+  }
+}
+
+}  // namespace
+
+DiffusionCurve withoutTeeth(const DiffusionCurve& curve) {
+  const double smooth_cosine = std::cos(kSmoothJoinDegrees * M_PI / 180.0);
+  DiffusionCurve result = curve;
+  std::vector<Point2>& points = result.control_points;
+  // From the end, so that the segments still to be checked keep their indices.
+  for (int j = result.segmentCount() - 2; j >= 1; --j) {
+    if (!isTooth(points, j, smooth_cosine)) continue;
+    const int a = 3 * j, b = 3 * j + 3;
+    const Point2 middle = 0.5 * (points[a] + points[b]);
+    points[a - 1] += middle - points[a];
+    points[b + 1] += middle - points[b];
+    points[a] = middle;
+    points.erase(points.begin() + a + 1, points.begin() + b + 1);
+    dropSegment(result.left_colors, j);
+    dropSegment(result.right_colors, j);
+    dropSegment(result.blur_points, j);
+  }
+  return result;
+}
+
+}  // namespace pacemod
+}  // namespace vicc_glyphs
