@@ -34,8 +34,8 @@ SkeletonGuard::SkeletonGuard(const NearestCurvePoint& field, double epsilon)
 GuardResult SkeletonGuard::limit(const Point2& knot, const Point2& direction, double requested,
                                  double growth) const {
   GuardResult result{std::max(requested, 0.0), false, 0};
-  const double tolerance = field_.gridPixel();
   while (result.amplitude > 0.0 && result.steps < kMaxGuardSteps) {
+    const double tolerance = std::min(field_.gridPixel(), kGuardSlack * result.amplitude);
     const Point2 moved = knot + (result.amplitude / growth) * direction;
     const Point2 other = field_.nearest(moved);
     if ((moved - other).norm() >= result.amplitude - tolerance) break;

@@ -108,8 +108,9 @@ TEST(TouchingContours, WavesStopAtTheTouchingPointsWithoutCrossing) {
 // pixel of slack let it through the skeleton guard. Its lobe then crossed over beyond the tip's
 // other side: the bench measured 1.02 px for a 4.10 px lobe at the lightning bolt's lower tip,
 // 0.64 px for a 1.02 px one at a star's tip. Near a corner the bisector is the skeleton, so the
-// half-space test is done exactly there: such knot points are reported ("corner") and every lobe
-// is within 10 % of what was applied.
+// half-space test is done exactly there: such knot points are reported ("corner"; since the
+// guard's slack is 5 % of the amplitude instead of a grid pixel it catches the lightning bolt's
+// itself: "skeleton") and every lobe is within 10 % of what was applied.
 class SharpTip : public ::testing::TestWithParam<CrossingCase> {};
 
 TEST_P(SharpTip, LobesBesideATipStayOnTheirSideOfIt) {
@@ -119,11 +120,11 @@ TEST_P(SharpTip, LobesBesideATipStayOnTheirSideOfIt) {
   EXPECT_EQ(check.reduced_lobes_ok, check.reduced_lobes);
   for (const std::string& failure : check.failures) ADD_FAILURE() << failure;
   EXPECT_EQ(check.new_crossings, 0);
-  int at_corners = 0;
+  int limited = 0;  // by the prevention itself, not by the polygon check's repair
   for (const CurveWaveReport& r : glyph.reports) {
-    for (const PeakReduction& reduction : r.reductions) at_corners += reduction.reason == "corner";
+    for (const PeakReduction& reduction : r.reductions) limited += reduction.reason != "crossing";
   }
-  EXPECT_GT(at_corners, 0);
+  EXPECT_GT(limited, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -57,6 +57,24 @@ TEST_F(GuardFixture, OutwardTranslationsAwayFromOtherCurvesAreFree) {
   EXPECT_DOUBLE_EQ(result.amplitude, 15.0);
 }
 
+// On a field of one grid pixel per pixel (lines through pixel centres, 11 px apart): another
+// curve point closer than the amplitude by less than that pixel but by more than kGuardSlack of
+// it still limits the amplitude (a whole pixel of slack let 0.8 mm lobes end 12 % short of
+// their amplitude beside convex corners).
+TEST(SkeletonGuardTest, TheSlackIsAFractionOfTheAmplitudeBelowAGridPixel) {
+  const NearestCurvePoint field({{{0, 20.5}, {100, 20.5}}, {{0, 31.5}, {100, 31.5}}}, 100, 50, 1.0);
+  const SkeletonGuard guard(field, 0.5);
+  ASSERT_DOUBLE_EQ(field.gridPixel(), 1.0);
+  // (20, 26.4) is 5.1 from the other line: 0.8 px nearer (over 5 % of 5.9): 5.5 - 0.5.
+  const GuardResult limited = guard.limit({20, 20.5}, {0, 1}, 5.9);
+  EXPECT_TRUE(limited.reduced);
+  EXPECT_NEAR(limited.amplitude, 5.0, 0.05);
+  // (20, 26.1) is 5.4 from it: 0.2 px nearer, under 5 % of 5.6.
+  const GuardResult kept = guard.limit({20, 20.5}, {0, 1}, 5.6);
+  EXPECT_FALSE(kept.reduced);
+  EXPECT_DOUBLE_EQ(kept.amplitude, 5.6);
+}
+
 }  // namespace
 }  // namespace pacemod
 }  // namespace vicc_glyphs
