@@ -86,18 +86,31 @@ NearestCurvePoint::~NearestCurvePoint() {
   if (buffers_ && !spareBuffers()) spareBuffers() = std::move(buffers_);
 }
 
-int NearestCurvePoint::featureAt(const Point2& query) const {
+Point2 NearestCurvePoint::nearest(const Point2& query) const {
   // Clamp in floating point first: a far-away or non-finite query must not overflow an int.
   auto cell = [](double g, int size) {
     return static_cast<int>(std::isfinite(g) ? std::clamp(g, 0.0, size - 1.0) : 0.0);
   };
   const int ix = cell(query.x() * scale_ + margin_, grid_.width);
   const int iy = cell(query.y() * scale_ + margin_, grid_.height);
-  return buffers_->feature[static_cast<std::size_t>(iy) * grid_.width + ix];
-}
-
-Point2 NearestCurvePoint::nearest(const Point2& query) const {
-  return buffers_->samples[featureAt(query)];
+  // A pixel's feature is the sample nearest to the pixel's centre, which can be up to a grid
+  // pixel further from the query than its true nearest sample (0.76 px inside the leaf's
+  // slit: the guard then missed the other side). The features of the pixels around it hold
+  // that sample: the exact nearest of those nine.
+  const FieldBuffers& b = *buffers_;
+  Point2 best = b.samples[b.feature[static_cast<std::size_t>(iy) * grid_.width + ix]];
+  double best_distance = (best - query).squaredNorm();
+  for (int y = std::max(iy - 1, 0); y <= std::min(iy + 1, grid_.height - 1); ++y) {
+    for (int x = std::max(ix - 1, 0); x <= std::min(ix + 1, grid_.width - 1); ++x) {
+      const Point2& sample = b.samples[b.feature[static_cast<std::size_t>(y) * grid_.width + x]];
+      const double distance = (sample - query).squaredNorm();
+      if (distance < best_distance) {
+        best = sample;
+        best_distance = distance;
+      }
+    }
+  }
+  return best;
 }
 
 }  // namespace pacemod

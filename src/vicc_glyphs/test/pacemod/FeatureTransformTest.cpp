@@ -70,6 +70,18 @@ TEST(FeatureTransformTest, NearestCurvePointReturnsExactSamplesOfTheCurves) {
   EXPECT_THROW(NearestCurvePoint({}, 10, 10), std::invalid_argument);
 }
 
+// A pixel's feature is the sample nearest to the pixel's centre: for (50.5, 25.2) in pixel row
+// 25 that is the line at y = 29.95 (row 29, 4 rows away; the other line is in row 20), though
+// the line at y = 20.95 is 0.5 px nearer to the query itself. The pixels around it know better.
+TEST(FeatureTransformTest, NearestCurvePointLooksAtThePixelsAroundTheQuery) {
+  const std::vector<std::vector<Point2>> lines{{{10, 20.95}, {90, 20.95}},
+                                               {{10, 29.95}, {90, 29.95}}};
+  const NearestCurvePoint field(lines, 100, 40, 1.0);
+  EXPECT_NEAR(field.nearest({50.5, 25.2}).y(), 20.95, 1e-12);
+  EXPECT_NEAR(field.nearest({50.5, 25.7}).y(), 29.95, 1e-12);
+  EXPECT_NEAR(field.nearest({50.5, 25.2}).x(), 50.5, 0.5);
+}
+
 // Fields reuse their thread's buffers: a field built after a larger one (different grid size,
 // curves elsewhere) must not see the earlier field's samples, and a field that is still alive
 // keeps its own buffers while another is built.

@@ -3,8 +3,9 @@
 // feature labels of thesis 6.2.3.3 / 6.2.4.1): the curves are sampled densely, every sample
 // marks the grid pixel it falls in (keeping the exact sample point), and a feature transform of
 // that grid gives each pixel its nearest marked pixel. A query returns the exact sample point
-// of that feature pixel, so distances are exact up to the grid's discretisation (within about
-// one grid pixel of the true nearest point).
+// nearest to it among the feature pixels of its pixel and the eight around it: a pixel's own
+// feature is nearest to the pixel's centre, up to a grid pixel further from the query than its
+// true nearest sample.
 
 #include <memory>
 #include <opencv2/core.hpp>
@@ -48,8 +49,6 @@ class NearestCurvePoint {
   double gridPixel() const { return 1.0 / scale_; }
 
  private:
-  int featureAt(const Point2& query) const;
-
   double scale_;
   int margin_;
   cv::Size grid_;
