@@ -8,6 +8,10 @@ namespace vicc_glyphs {
 namespace pacemod {
 
 constexpr int kMaxGuardSteps = 64;
+// A reduced amplitude below this (image pixels) becomes 0: a wave that small cannot be seen, and
+// a knot point translated by it keeps the contour from staying the original there (the
+// re-fit between it and a flat neighbour beside an icon corner left blips of 0.2-0.5 px).
+constexpr double kNegligibleAmplitude = 0.1;
 
 double skeletonAmplitude(const Point2& knot, const Point2& direction, const Point2& other) {
   const Point2 base = other - knot;
@@ -42,6 +46,7 @@ GuardResult SkeletonGuard::limit(const Point2& knot, const Point2& direction, do
     const double skeleton = growth * skeletonTranslation(knot, direction, other, growth);
     if (!std::isfinite(skeleton)) break;
     result.amplitude = std::clamp(skeleton - epsilon_, 0.0, result.amplitude);
+    if (result.amplitude < kNegligibleAmplitude) result.amplitude = 0.0;
     result.reduced = true;
     ++result.steps;
   }

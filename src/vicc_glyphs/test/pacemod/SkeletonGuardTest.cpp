@@ -57,6 +57,16 @@ TEST_F(GuardFixture, OutwardTranslationsAwayFromOtherCurvesAreFree) {
   EXPECT_DOUBLE_EQ(result.amplitude, 15.0);
 }
 
+// A reduction that leaves less than a tenth of a pixel leaves nothing: a' = 5.5, epsilon 5.45.
+TEST_F(GuardFixture, ReductionsBelowATenthOfAPixelLeaveNothing) {
+  const SkeletonGuard wide(field_, 5.45);
+  const GuardResult result = wide.limit({20, 20}, {0, 1}, 9.0);
+  EXPECT_TRUE(result.reduced);
+  EXPECT_EQ(result.amplitude, 0.0);
+  const SkeletonGuard narrower(field_, 5.3);  // 0.2 px stay
+  EXPECT_NEAR(narrower.limit({20, 20}, {0, 1}, 9.0).amplitude, 0.2, 0.02);
+}
+
 // On a field of one grid pixel per pixel (lines through pixel centres, 11 px apart): another
 // curve point closer than the amplitude by less than that pixel but by more than kGuardSlack of
 // it still limits the amplitude (a whole pixel of slack let 0.8 mm lobes end 12 % short of

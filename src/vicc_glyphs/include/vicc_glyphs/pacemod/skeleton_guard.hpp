@@ -47,6 +47,7 @@ class SkeletonGuard {
   /// < 1 (a knot point on an icon corner moving along its miter) a translation t puts the point
   /// growth * t away from its contour: amplitudes are those distances (the translation is
   /// amplitude / growth), and a curve point closer than that distance is the one to avoid.
+  /// A reduced amplitude below a tenth of an image pixel becomes 0.
   GuardResult limit(const Point2& knot, const Point2& direction, double requested,
                     double growth = 1.0) const;
 
