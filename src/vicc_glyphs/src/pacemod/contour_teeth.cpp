@@ -28,9 +28,14 @@ double polygonLength(const std::vector<Point2>& points, int segment) {
   return length;
 }
 
-// Segment j (0 < j < K - 1) is a tooth: shorter than kOneCornerPx between two sharp joins.
+// Segment j (0 < j < K - 1) is a tooth: shorter than kOneCornerPx between two sharp joins, its
+// neighbours not. A chain of short segments that turn by a few degrees each (a finely
+// flattened arc) is a shape, not a tooth: taken out one by one it would shrink to nothing.
 bool isTooth(const std::vector<Point2>& points, int j, double smooth_cosine) {
-  if (polygonLength(points, j) >= kOneCornerPx) return false;
+  if (polygonLength(points, j) >= kOneCornerPx || polygonLength(points, j - 1) < kOneCornerPx ||
+      polygonLength(points, j + 1) < kOneCornerPx) {
+    return false;
+  }
   const int a = 3 * j, b = 3 * j + 3;
   const Point2 before = directionAt(points, a, -1), after = directionAt(points, b, 1);
   const Point2 leaving = directionAt(points, a, 1), arriving = directionAt(points, b, -1);
@@ -54,20 +59,23 @@ void dropSegment(Points& points, int j) {
 
 DiffusionCurve withoutTeeth(const DiffusionCurve& curve) {
   const double smooth_cosine = std::cos(kSmoothJoinDegrees * M_PI / 180.0);
+  std::vector<int> teeth;  // found on the curve as it is: a tooth's neighbours are none
+  for (int j = 1; j + 1 < curve.segmentCount(); ++j) {
+    if (isTooth(curve.control_points, j, smooth_cosine)) teeth.push_back(j);
+  }
   DiffusionCurve result = curve;
   std::vector<Point2>& points = result.control_points;
-  // From the end, so that the segments still to be checked keep their indices.
-  for (int j = result.segmentCount() - 2; j >= 1; --j) {
-    if (!isTooth(points, j, smooth_cosine)) continue;
-    const int a = 3 * j, b = 3 * j + 3;
+  // From the end, so that the teeth still to be removed keep their indices.
+  for (auto j = teeth.rbegin(); j != teeth.rend(); ++j) {
+    const int a = 3 * *j, b = 3 * *j + 3;
     const Point2 middle = 0.5 * (points[a] + points[b]);
     points[a - 1] += middle - points[a];
     points[b + 1] += middle - points[b];
     points[a] = middle;
     points.erase(points.begin() + a + 1, points.begin() + b + 1);
-    dropSegment(result.left_colors, j);
-    dropSegment(result.right_colors, j);
-    dropSegment(result.blur_points, j);
+    dropSegment(result.left_colors, *j);
+    dropSegment(result.right_colors, *j);
+    dropSegment(result.blur_points, *j);
   }
   return result;
 }

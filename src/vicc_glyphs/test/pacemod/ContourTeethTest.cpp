@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "../support/straight_chain.hpp"
@@ -59,6 +60,13 @@ TEST(ContourTeethTest, LongerStepsSmoothJoinsAndTheSeamStay) {
   const DiffusionCurve split =
       straightChain({{20, 20}, {120, 20}, {120.3, 20}, {220, 20}, {220, 220}, {20, 220}});
   EXPECT_EQ(withoutTeeth(split).control_points, split.control_points);
+  // A circle of radius 4.6 px as 72 sides of 0.4 px, each turning by 5 degrees: a shape.
+  std::vector<Point2> circle;
+  for (int k = 0; k < 72; ++k) {
+    circle.emplace_back(50 + 4.6 * std::cos(k * M_PI / 36), 50 + 4.6 * std::sin(k * M_PI / 36));
+  }
+  const DiffusionCurve fine = straightChain(circle);
+  EXPECT_EQ(withoutTeeth(fine).control_points, fine.control_points);
   // The first segment is the step: left alone (the seam of the closed curve).
   const DiffusionCurve seam =
       straightChain({{120, 20}, {120, 20.2}, {220, 20.2}, {220, 220}, {20, 220}, {20, 20}});

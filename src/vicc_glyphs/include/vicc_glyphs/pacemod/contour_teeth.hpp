@@ -14,12 +14,13 @@ namespace vicc_glyphs {
 namespace pacemod {
 
 /// `curve` with every tooth removed: a segment shorter than kOneCornerPx (its control polygon)
-/// between two sharp joins (each turning by more than kSmoothJoinDegrees). Its two ends become
-/// one point at their middle, a corner that turns by the sum of both joins' turns (none if they
-/// cancel); the neighbouring handles move with their ends (their directions stay), and colour
-/// and blur positions after it move back by one segment (those on it go to its place). The
-/// contour moves by half the tooth's length at most. A curve without teeth is returned as it
-/// is; the first and last segment (the seam of a closed curve) are left alone.
+/// between two sharp joins (each turning by more than kSmoothJoinDegrees), whose neighbours are
+/// not that short (a finely flattened arc stays as it is). Its two ends become one point at
+/// their middle, a corner that turns by the sum of both joins' turns (none if they cancel); the
+/// neighbouring handles move with their ends (their directions stay), and colour and blur
+/// positions after it move back by one segment (those on it go to its place). The contour moves
+/// by half the tooth's length at most. A curve without teeth is returned as it is; the first
+/// and last segment (the seam of a closed curve) are left alone.
 DiffusionCurve withoutTeeth(const DiffusionCurve& curve);
 
 }  // namespace pacemod
