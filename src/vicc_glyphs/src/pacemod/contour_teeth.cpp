@@ -23,8 +23,9 @@ Point2 directionAt(const std::vector<Point2>& points, int from, int step) {
 
 double polygonLength(const std::vector<Point2>& points, int segment) {
   double length = 0.0;
-  for (int k = 0; k < 3; ++k)
+  for (int k = 0; k < 3; ++k) {
     length += (points[3 * segment + k + 1] - points[3 * segment + k]).norm();
+  }
   return length;
 }
 

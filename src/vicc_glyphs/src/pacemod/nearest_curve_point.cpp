@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "vicc_glyphs/render/pixel_buffer.hpp"
@@ -98,8 +99,8 @@ Point2 NearestCurvePoint::nearest(const Point2& query) const {
   // slit: the guard then missed the other side). The features of the pixels around it hold
   // that sample: the exact nearest of those nine.
   const FieldBuffers& b = *buffers_;
-  Point2 best = b.samples[b.feature[static_cast<std::size_t>(iy) * grid_.width + ix]];
-  double best_distance = (best - query).squaredNorm();
+  Point2 best = Point2::Zero();
+  double best_distance = std::numeric_limits<double>::infinity();
   for (int y = std::max(iy - 1, 0); y <= std::min(iy + 1, grid_.height - 1); ++y) {
     for (int x = std::max(ix - 1, 0); x <= std::min(ix + 1, grid_.width - 1); ++x) {
       const Point2& sample = b.samples[b.feature[static_cast<std::size_t>(y) * grid_.width + x]];

@@ -43,11 +43,11 @@ class SkeletonGuard {
   /// Largest allowed amplitude <= `requested` for translating `knot` along the unit
   /// `direction`. A curve point counts as closer only when it is closer by more than the
   /// field's grid pixel or kGuardSlack of the amplitude, whichever is less, so that k's own
-  /// sampled neighbourhood does not trigger. With `growth`
-  /// < 1 (a knot point on an icon corner moving along its miter) a translation t puts the point
-  /// growth * t away from its contour: amplitudes are those distances (the translation is
-  /// amplitude / growth), and a curve point closer than that distance is the one to avoid.
-  /// A reduced amplitude below a tenth of an image pixel becomes 0.
+  /// sampled neighbourhood does not trigger. With `growth` < 1 (a knot point on an icon corner
+  /// moving along its miter) a translation t puts the point growth * t away from its contour:
+  /// amplitudes are those distances (the translation is amplitude / growth), and a curve point
+  /// closer than that distance is the one to avoid. A reduced amplitude below a tenth of an
+  /// image pixel becomes 0.
   GuardResult limit(const Point2& knot, const Point2& direction, double requested,
                     double growth = 1.0) const;
 
