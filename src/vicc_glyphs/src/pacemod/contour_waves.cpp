@@ -380,12 +380,37 @@ int swallowingCorner(const ContourFrame& frame, const ContourWave& wave, std::si
   return -1;
 }
 
+// The inner icon corner past whose swallowed stretch, but within the stretch its samples
+// are spread over (OffsetFit::spreadDistance), knot point i lies, or -1. There the fit takes the
+// offset contour from nearer the corner (what is left past the meeting point, spread over the
+// whole stretch), while a constraint held the curve at the knot point's own offset point: the
+// curve bulged between them (the pine tree's concave branch corners, 2/10 mm, 0.4 mm: 4.55 px
+// for 4.10; rectangle plateaus over corners likewise). Such a knot point gets no constraint:
+// the spread reaches its amplitude a little nearer the corner.
+int spreadingCorner(const ContourFrame& frame, const ContourWave& wave, std::size_t i,
+                    const std::vector<std::pair<double, double>>& stretches) {
+  const double end = wave.layout.length, l = wave.parameters[i];
+  for (std::size_t c = 0; c < frame.corners.size(); ++c) {
+    const ContourCorner& corner = frame.corners[c];
+    if (!corner.inside(appliedOffset(wave, i))) continue;
+    const double d = cyclicOffset(corner.arc_length, l, end);  // the closing corner: 0 and L
+    const int side = d < 0.0 ? -1 : 1;
+    const double met = side < 0 ? stretches[c].first : stretches[c].second;
+    if (met > 0.0 && std::abs(d) >= met &&
+        std::abs(d) < frame.offset_fit->spreadDistance(static_cast<int>(c), side, met)) {
+      return static_cast<int>(c);
+    }
+  }
+  return -1;
+}
+
 // Sine and rectangle: inside an icon corner's angle the offset contour of the sides (each by
 // its own offset) ends where they meet the bisector. A knot point on the corner goes only that
 // far along the bisector; one whose offset would fall past the bisector is left to the offset
 // fit (no constraint of its own). Either gets the distance of the meeting point; where that is
-// less than its amplitude it is reported ("corner"). Twice, as the meeting point moves with the
-// knot points' own amplitudes.
+// less than its amplitude it is reported ("corner"). One that lies past the meeting point but
+// within the stretch the fit spreads (spreadingCorner) is left to the fit too, with its
+// amplitude. Twice, as the meeting point moves with the knot points' own amplitudes.
 void limitOnCorners(const ContourFrame& frame, ContourWave& wave) {
   const detail::OffsetFit::Offset offset = [&wave](double l) { return waveOffsetAt(wave, l); };
   for (int pass = 0; pass < 2; ++pass) {
@@ -395,7 +420,11 @@ void limitOnCorners(const ContourFrame& frame, ContourWave& wave) {
       int c = wave.on_corner[i];
       if (c < 0) {
         c = swallowingCorner(frame, wave, i, stretches);
-        if (c < 0) continue;
+        if (c < 0) {
+          // No constraint, and its amplitude stays.
+          if (spreadingCorner(frame, wave, i, stretches) >= 0) wave.swallowed[i] = true;
+          continue;
+        }
         wave.swallowed[i] = true;
       } else if (!frame.corners[c].inside(appliedOffset(wave, i))) {
         continue;

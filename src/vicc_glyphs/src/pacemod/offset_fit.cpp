@@ -123,6 +123,10 @@ double OffsetFit::meetingDistance(int c, int side, const Offset& offset) const {
   return high;
 }
 
+double OffsetFit::spreadDistance(int c, int side, double meeting) const {
+  return std::min(kSpreadOver * meeting, side < 0 ? reach_[c].first : reach_[c].second);
+}
+
 std::vector<Point2> OffsetFit::cornerTargets(const Offset& offset) const {
   std::vector<Point2> targets;
   for (std::size_t c = 0; c < corners_.size(); ++c) {
@@ -186,10 +190,9 @@ bspline::BSplineCurve OffsetFit::fit(const Offset& offset,
       // The closing corner is at 0 and at L.
       const double distance = cyclicDistance(s.arc_length, corners_[s.corner].arc_length, end);
       const double met = s.side < 0 ? meeting[s.corner].first : meeting[s.corner].second;
-      const double most = s.side < 0 ? reach_[s.corner].first : reach_[s.corner].second;
       // Inside the angle the whole swallowed stretch has to be spread; outside, the arc takes
       // over at most half the way to the next knot.
-      const double spread = met > 0.0 ? std::min(kSpreadOver * met, most)
+      const double spread = met > 0.0 ? spreadDistance(s.corner, s.side, met)
                                       : std::min(kSpreadOver * needs[s.corner], s.room);
       if (s.side == 0) {
         q = corner_targets[s.corner];

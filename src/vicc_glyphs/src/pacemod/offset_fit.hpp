@@ -49,6 +49,11 @@ class OffsetFit {
   /// it does not).
   double meetingDistance(int c, int side, const Offset& offset) const;
 
+  /// Inside corner c's angle: the stretch along its side (-1 before, +1 after) over which the
+  /// samples spread the offset contour left past `meeting` (meetingDistance): kSpreadOver times
+  /// it, at most half the way to the next corner.
+  double spreadDistance(int c, int side, double meeting) const;
+
   /// The fit of the contour offset by offset(l) (pixels, positive outward); `corner_targets`
   /// from cornerTargets(offset).
   bspline::BSplineCurve fit(const Offset& offset, const std::vector<Point2>& corner_targets) const;

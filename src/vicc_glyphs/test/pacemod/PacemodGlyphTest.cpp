@@ -111,6 +111,25 @@ TEST(PacemodGlyphTest, SubPixelStepsOfAnIconLeaveNoSpike) {
   }
 }
 
+// The pine tree's concave branch corners (sine, 2 waves/10 mm, 0.4 mm): a peak knot point lies
+// just past the stretch its corner swallows, inside the stretch the offset fit spreads. Held at
+// its own offset point, the curve bulged to 4.55 px for 4.10; left to the spread, every lobe is
+// within 10 % and nothing folds.
+TEST(PacemodGlyphTest, SinePeaksBesideAConcaveCornerFollowTheSpreadOffset) {
+  const DiffusionCurveImage original = loadDiffusionCurves(kIcons + "pine-tree.svg", 512);
+  DiffusionCurveImage image = original;
+  const WaveSpec spec{Waveform::Sine, 0.2, 0.4};
+  const std::vector<CurveWaveReport> reports =
+      applyWaves(image, selectCurves(image, {}), spec, 50.0);
+  const measure::GlyphCheck check = measure::checkGlyph(original, image, reports, spec, 512 / 50.0);
+  std::string failures;
+  for (const std::string& failure : check.failures) failures += "\n  " + failure;
+  EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << failures;
+  EXPECT_GT(check.full_lobes, 50);
+  EXPECT_EQ(check.new_crossings, 0);
+  EXPECT_EQ(check.new_sharp_turns, 0);
+}
+
 TEST(PacemodGlyphTest, InvalidParametersAreRejectedNamingThem) {
   DiffusionCurveImage image = loadDiffusionCurves(kIcons + "heart.svg", 128);
   auto message = [&](const WaveSpec& spec, double size_mm, std::vector<int> curves) {
