@@ -357,12 +357,24 @@ std::vector<std::pair<double, double>> swallowedStretches(const ContourFrame& fr
   return stretches;
 }
 
-// The inner icon corner whose offset contour swallows knot point i (its base lies within the
-// stretch of a side whose offset falls past the corner's bisector), or -1. Corners are sorted
-// by arc length; only the two around the knot point can swallow it.
-int swallowingCorner(const ContourFrame& frame, const ContourWave& wave, std::size_t i,
-                     const std::vector<std::pair<double, double>>& stretches) {
-  if (frame.corners.empty()) return -1;
+// Where knot point i lies against the inner icon corners around it (corners are sorted by arc
+// length; only the two around it can hold it):
+// - swallowed: within the stretch of a side whose offset falls past the corner's bisector;
+// - spread: past that stretch but within the one the offset fit spreads what is left of the
+//   side's offset over (OffsetFit::spreadDistance). There the fit takes the offset contour from
+//   nearer the corner, while a constraint held the curve at the knot point's own offset point:
+//   the curve bulged between them (the pine tree's concave branch corners, 2/10 mm, 0.4 mm:
+//   4.55 px for 4.10; rectangle plateaus over corners likewise). Such a knot point gets no
+//   constraint either: the spread reaches its amplitude a little nearer the corner.
+struct InnerCorner {
+  int corner = -1;
+  bool swallowed = false;
+};
+
+InnerCorner innerCornerOf(const ContourFrame& frame, const ContourWave& wave, std::size_t i,
+                          const std::vector<std::pair<double, double>>& stretches) {
+  InnerCorner spread;
+  if (frame.corners.empty()) return spread;
   const double end = wave.layout.length, l = wave.parameters[i];
   const auto next = std::upper_bound(
       frame.corners.begin(), frame.corners.end(), l,
@@ -373,35 +385,15 @@ int swallowingCorner(const ContourFrame& frame, const ContourWave& wave, std::si
     const ContourCorner& corner = frame.corners[c];
     if (!corner.inside(appliedOffset(wave, i))) continue;
     const double d = cyclicOffset(corner.arc_length, l, end);  // the closing corner: 0 and L
-    if (std::abs(d) < (d < 0.0 ? stretches[c].first : stretches[c].second)) {
-      return static_cast<int>(c);
-    }
-  }
-  return -1;
-}
-
-// The inner icon corner past whose swallowed stretch, but within the stretch its samples
-// are spread over (OffsetFit::spreadDistance), knot point i lies, or -1. There the fit takes the
-// offset contour from nearer the corner (what is left past the meeting point, spread over the
-// whole stretch), while a constraint held the curve at the knot point's own offset point: the
-// curve bulged between them (the pine tree's concave branch corners, 2/10 mm, 0.4 mm: 4.55 px
-// for 4.10; rectangle plateaus over corners likewise). Such a knot point gets no constraint:
-// the spread reaches its amplitude a little nearer the corner.
-int spreadingCorner(const ContourFrame& frame, const ContourWave& wave, std::size_t i,
-                    const std::vector<std::pair<double, double>>& stretches) {
-  const double end = wave.layout.length, l = wave.parameters[i];
-  for (std::size_t c = 0; c < frame.corners.size(); ++c) {
-    const ContourCorner& corner = frame.corners[c];
-    if (!corner.inside(appliedOffset(wave, i))) continue;
-    const double d = cyclicOffset(corner.arc_length, l, end);  // the closing corner: 0 and L
     const int side = d < 0.0 ? -1 : 1;
     const double met = side < 0 ? stretches[c].first : stretches[c].second;
-    if (met > 0.0 && std::abs(d) >= met &&
+    if (std::abs(d) < met) return {static_cast<int>(c), true};
+    if (spread.corner < 0 && met > 0.0 &&
         std::abs(d) < frame.offset_fit->spreadDistance(static_cast<int>(c), side, met)) {
-      return static_cast<int>(c);
+      spread.corner = static_cast<int>(c);
     }
   }
-  return -1;
+  return spread;
 }
 
 // Sine and rectangle: inside an icon corner's angle the offset contour of the sides (each by
@@ -409,7 +401,7 @@ int spreadingCorner(const ContourFrame& frame, const ContourWave& wave, std::siz
 // far along the bisector; one whose offset would fall past the bisector is left to the offset
 // fit (no constraint of its own). Either gets the distance of the meeting point; where that is
 // less than its amplitude it is reported ("corner"). One that lies past the meeting point but
-// within the stretch the fit spreads (spreadingCorner) is left to the fit too, with its
+// within the stretch the fit spreads (innerCornerOf) is left to the fit too, with its
 // amplitude. Twice, as the meeting point moves with the knot points' own amplitudes.
 void limitOnCorners(const ContourFrame& frame, ContourWave& wave) {
   const detail::OffsetFit::Offset offset = [&wave](double l) { return waveOffsetAt(wave, l); };
@@ -419,13 +411,11 @@ void limitOnCorners(const ContourFrame& frame, ContourWave& wave) {
     for (std::size_t i = 0; i + 1 < wave.parameters.size(); ++i) {
       int c = wave.on_corner[i];
       if (c < 0) {
-        c = swallowingCorner(frame, wave, i, stretches);
-        if (c < 0) {
-          // No constraint, and its amplitude stays.
-          if (spreadingCorner(frame, wave, i, stretches) >= 0) wave.swallowed[i] = true;
-          continue;
-        }
-        wave.swallowed[i] = true;
+        const InnerCorner inner = innerCornerOf(frame, wave, i, stretches);
+        if (inner.corner < 0) continue;
+        wave.swallowed[i] = true;        // no constraint
+        if (!inner.swallowed) continue;  // spread: its amplitude stays
+        c = inner.corner;
       } else if (!frame.corners[c].inside(appliedOffset(wave, i))) {
         continue;
       }
