@@ -7,17 +7,12 @@ namespace vicc_glyphs {
 namespace pacemod {
 namespace {
 
-const double kSmoothCosine = std::cos(kSmoothJoinDegrees * M_PI / 180.0);
+const double kSmoothCosine = smoothJoinCosine();
 
 // Unit tangent (in the direction of travel) of the side after (`step` +1) or before (-1) the
-// de Boor point `from` of a clamped cubic that passes through it (a C0 corner): the direction
-// of its control polygon there, zero-length handles skipped.
+// de Boor point `from` of a clamped cubic that passes through it (a C0 corner).
 Point2 polygonDirection(const std::vector<Point2>& points, int from, int step) {
-  for (int k = from + step; k >= 0 && k < static_cast<int>(points.size()); k += step) {
-    const Point2 d = step * (points[k] - points[from]);
-    if (d.norm() > 1e-9) return d.normalized();
-  }
-  return Point2::Zero();
+  return controlPolygonDirection(points, from, step, static_cast<int>(points.size()));
 }
 
 ContourCorner cornerOf(double arc_length, const Point2& point, const Point2& before,
@@ -64,6 +59,18 @@ double ContourCorner::bisectorOffsetAt(double d) const {
 Point2 outwardNormalOf(const Point2& d, double area) {
   const Point2 left = Point2(d.y(), -d.x()).normalized();
   return area > 0.0 ? left : Point2(-left);
+}
+
+double smoothJoinCosine() { return std::cos(kSmoothJoinDegrees * M_PI / 180.0); }
+
+Point2 controlPolygonDirection(const std::vector<Point2>& points, int from, int step,
+                               int max_steps) {
+  const int size = static_cast<int>(points.size());
+  for (int k = 1, q = from + step; k <= max_steps && q >= 0 && q < size; ++k, q += step) {
+    const Point2 d = step * (points[q] - points[from]);
+    if (d.norm() > 1e-9) return d.normalized();
+  }
+  return Point2::Zero();
 }
 
 std::vector<ContourCorner> contourCorners(const bspline::BSplineCurve& contour,

@@ -1,24 +1,15 @@
 #include "vicc_glyphs/pacemod/contour_teeth.hpp"
 
-#include <cmath>
-
 #include "vicc_glyphs/pacemod/contour_corners.hpp"
 
 namespace vicc_glyphs {
 namespace pacemod {
 namespace {
 
-constexpr double kNoLength = 1e-9;
-
-// Unit direction from the anchor points[from] towards the first point (`step` +1) or away from
-// the last point (-1) of its segment that differs from it (zero-length handles skipped); zero
-// if the segment has no length.
+// Unit direction at the anchor points[from] along its segment after (`step` +1) or before (-1)
+// it; zero if that segment has no length.
 Point2 directionAt(const std::vector<Point2>& points, int from, int step) {
-  for (int k = 1; k <= 3; ++k) {
-    const Point2 d = step * (points[from + step * k] - points[from]);
-    if (d.norm() > kNoLength) return d.normalized();
-  }
-  return Point2::Zero();
+  return controlPolygonDirection(points, from, step, 3);
 }
 
 double polygonLength(const std::vector<Point2>& points, int segment) {
@@ -59,7 +50,7 @@ void dropSegment(Points& points, int j) {
 }  // namespace
 
 DiffusionCurve withoutTeeth(const DiffusionCurve& curve) {
-  const double smooth_cosine = std::cos(kSmoothJoinDegrees * M_PI / 180.0);
+  const double smooth_cosine = smoothJoinCosine();
   std::vector<int> teeth;  // found on the curve as it is: a tooth's neighbours are none
   for (int j = 1; j + 1 < curve.segmentCount(); ++j) {
     if (isTooth(curve.control_points, j, smooth_cosine)) teeth.push_back(j);

@@ -74,5 +74,14 @@ std::vector<ContourCorner> contourCorners(const bspline::BSplineCurve& contour,
 /// Outward unit normal for the tangent `d` of a contour with signed area `area`.
 Point2 outwardNormalOf(const Point2& d, double area);
 
+/// cos(kSmoothJoinDegrees): unit tangents with a larger dot product meet in a smooth join.
+double smoothJoinCosine();
+
+/// Unit direction of a control polygon at points[from], in the direction of travel: towards
+/// the first of the next `max_steps` points that differs from it (`step` +1), or from the first
+/// such point before it (-1), so that zero-length handles are skipped; zero if there is none.
+Point2 controlPolygonDirection(const std::vector<Point2>& points, int from, int step,
+                               int max_steps);
+
 }  // namespace pacemod
 }  // namespace vicc_glyphs
