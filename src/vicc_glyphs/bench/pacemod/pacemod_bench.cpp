@@ -46,7 +46,8 @@ double threadMilliseconds() {
 bool verbose = false;
 bool render_glyphs = true;  // --no-render: checks only (faster searches for failures)
 WaveOptions options;
-std::string overlay_dir;          // --overlays: an SVG picture of every glyph that fails a check
+// --overlays: an SVG picture of every glyph that fails a check or has a new sharp turn.
+std::string overlay_dir;
 std::FILE* times_file = nullptr;  // --times: one line per glyph
 
 struct Totals {
@@ -135,12 +136,20 @@ void runGlyph(const fs::path& icon, const WaveSpec& spec, DiffusionCurveRenderer
     for (const std::string& failure : check.failures)
       std::fprintf(stderr, "    %s\n", failure.c_str());
   }
-  if (!overlay_dir.empty() && !check.failures.empty()) {
+  if (!overlay_dir.empty() && (!check.failures.empty() || check.new_sharp_turns > 0)) {
+    std::vector<std::string> notes = check.failures;
+    std::vector<Point2> marks = check.failure_points;
+    for (const Point2& turn : check.sharp_turn_points) {
+      char note[80];
+      std::snprintf(note, sizeof note, "new sharp turn at (%.1f, %.1f)", turn.x(), turn.y());
+      notes.push_back(note);
+      marks.push_back(turn);
+    }
     char name[160];
     std::snprintf(name, sizeof name, "%s/%s_%s_%g_%g.svg", overlay_dir.c_str(), icon.stem().c_str(),
                   waveformName(spec.waveform).c_str(), spec.waves_per_mm * 10, spec.amplitude_mm);
-    measure::writeContourOverlay(name, original, image, reports, spec, kSize / kSizeMm,
-                                 check.failures, check.failure_points);
+    measure::writeContourOverlay(name, original, image, reports, spec, kSize / kSizeMm, notes,
+                                 marks);
   }
   measure::add(totals.check, check);
 }
@@ -182,7 +191,7 @@ const std::vector<cli::OptionSpec> kOptionSpecs = {
     {"icon", "NAME.svg", "only this icon"},
     {"frequency", "F", "only this frequency, waves per 10 mm"},
     {"amplitude", "A", "only this amplitude, mm"},
-    {"overlays", "DIR", "an SVG picture of every glyph that fails a check"},
+    {"overlays", "DIR", "an SVG picture of every glyph that fails a check or has a new sharp turn"},
     {"times", "FILE.tsv", "CPU ms per glyph (import, modify, render, total) and CG iterations"},
 };
 

@@ -49,6 +49,12 @@ constexpr double kMinStripPiece = 2.0;
 // A strip that ends at an icon corner is split where it leaves the offset path by more than this
 // fraction of its larger end offset (a deviation that large reads as a lobe of its own).
 constexpr double kCornerStripDeviation = 0.5;
+// Its half away from the corner, where the path is the contour's plain offset, is held to this
+// fraction of the offset when the strip is longer than kLongCornerStrip times its larger end
+// offset (a sawtooth's 46 px flank on a bend at 2 waves/10 mm, 1 px amplitude: the whole
+// flank's cubic left the far half by 0.45 px, a lobe of 1.33 px for 1.02).
+constexpr double kCornerStripFarDeviation = 0.2;
+constexpr double kLongCornerStrip = 8.0;
 // A knot point limited on an icon corner is reported when it keeps less than this of its
 // amplitude.
 constexpr double kCornerShortfall = 0.99;
@@ -481,6 +487,16 @@ struct StripBreak {
   const ContourCorner* corner;
 };
 
+// Whether the strip from `a` to `b`, fitted as one cubic with `deviation`, stays whole (see
+// appendStrip).
+bool stripFits(const StripBreak& a, const StripBreak& b, const detail::StripDeviation& deviation) {
+  if (!a.corner && !b.corner) return deviation.largest <= kStripTolerance;
+  const double offset = std::max(std::abs(a.offset), std::abs(b.offset));
+  if (deviation.largest > std::max(kStripTolerance, kCornerStripDeviation * offset)) return false;
+  return b.arc_length - a.arc_length <= kLongCornerStrip * offset ||
+         deviation.away_from_corner <= std::max(kStripTolerance, kCornerStripFarDeviation * offset);
+}
+
 // Fits the strip from `a` to `b` as one cubic, appended to `points` (its inner de Boor points
 // and b's), or, where that cubic leaves the contour's offset path by more than
 // kStripTolerance (a long strip on a bend: a sawtooth's flank at 2 waves/10 mm is 46 px long),
@@ -489,20 +505,17 @@ struct StripBreak {
 // kCornerStripDeviation of its offset: split at kStripTolerance, more knot points were reduced
 // by the polygon check than lobes gained (bench, sessions 20 and 22); whole, a strip around an
 // asterisk arm's round end (Bootstrap cloud-snow-fill) cut it by 1.8 px at a 1 px amplitude, a
-// lobe pair too many.
+// lobe pair too many. A long one is also split where its half away from the corner leaves the
+// path by more than kCornerStripFarDeviation of its offset (a tighter rule for every corner
+// strip, tried in session 25, reduced more knot points; this one changes only such flanks).
 void appendStrip(const OffsetFrame& offsets, const StripBreak& a, const StripBreak& b, int depth,
                  std::vector<double>& knots, std::vector<Point2>& points) {
   const std::size_t first = points.size() - 1;
   points.insert(points.end(), 3, b.point);
-  const double residual = detail::fitStrip(
+  const detail::StripDeviation deviation = detail::fitStrip(
       points, static_cast<int>(first),
       {a.arc_length, b.arc_length, a.offset, b.offset, a.corner, b.corner}, offsets);
-  const double tolerance =
-      a.corner || b.corner
-          ? std::max(kStripTolerance,
-                     kCornerStripDeviation * std::max(std::abs(a.offset), std::abs(b.offset)))
-          : kStripTolerance;
-  if (residual <= tolerance || depth == kMaxStripSplits ||
+  if (stripFits(a, b, deviation) || depth == kMaxStripSplits ||
       b.arc_length - a.arc_length < 2.0 * kMinStripPiece) {
     return;
   }

@@ -86,13 +86,13 @@ std::vector<Point2> outerArc(const ContourCorner& corner, double w, int side) {
   return arc;
 }
 
-double fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
-                const OffsetFrame& frame) {
+StripDeviation fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
+                        const OffsetFrame& frame) {
   return fitStrip(points, first, piece, stripSamples(frame, piece.l0, piece.l1));
 }
 
-double fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
-                const std::vector<ContourSample>& samples) {
+StripDeviation fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
+                        const std::vector<ContourSample>& samples) {
   const Point2 p0 = points[first], p3 = points[first + 3];
   // The offset path with the curve parameter of each point: the arc-length fraction along the
   // piece, or (once a corner changed the path) the chord length along it.
@@ -134,7 +134,7 @@ double fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
   if (path.size() < 4 || !(at.back() > 0.0)) {  // too little left: the straight line
     points[first + 1] = p0 + (p3 - p0) / 3.0;
     points[first + 2] = p0 + 2.0 * (p3 - p0) / 3.0;
-    return 0.0;
+    return {};
   }
   Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
   Eigen::Matrix2d rhs = Eigen::Matrix2d::Zero();
@@ -150,13 +150,21 @@ double fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
   const Point2 p1 = inner.row(0).transpose(), p2 = inner.row(1).transpose();
   points[first + 1] = p1;
   points[first + 2] = p2;
-  double residual = 0.0;
+  // The half away from a single icon corner: t from 0.5 on after one at the beginning, up to
+  // 0.5 before one at the end.
+  const bool one_corner = (piece.corner_at_begin != nullptr) != (piece.corner_at_end != nullptr);
+  const double far_sign = piece.corner_at_begin ? 1.0 : -1.0;
+  StripDeviation deviation;
   for (std::size_t i = 1; i + 1 < path.size(); ++i) {
     const double t = at[i], s = 1.0 - t;
     const Point2 fitted = s * s * s * p0 + 3 * t * s * s * p1 + 3 * t * t * s * p2 + t * t * t * p3;
-    residual = std::max(residual, (fitted - path[i]).norm());
+    const double distance = (fitted - path[i]).norm();
+    deviation.largest = std::max(deviation.largest, distance);
+    if (one_corner && far_sign * (t - 0.5) >= 0.0) {
+      deviation.away_from_corner = std::max(deviation.away_from_corner, distance);
+    }
   }
-  return residual;
+  return deviation;
 }
 
 }  // namespace detail

@@ -53,18 +53,25 @@ struct StripPiece {
   const ContourCorner* corner_at_end = nullptr;
 };
 
+/// How far a fitted strip leaves the offset path it follows (at the path's points).
+struct StripDeviation {
+  double largest = 0.0;
+  /// The largest over the half of the piece away from the icon corner at one of its ends (0
+  /// when it has an icon corner at both ends or none): there the path is the plain offset of
+  /// the contour, whatever the corner does to the other half.
+  double away_from_corner = 0.0;
+};
+
 /// Sets points[first + 1] and points[first + 2], the inner de Boor points of the cubic piece
 /// points[first .. first + 3] (its ends stay), by least squares with chord-length parameters.
-/// Returns the largest distance of the fitted cubic from the offset path it follows (at the
-/// path's points).
-double fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
-                const OffsetFrame& frame);
+StripDeviation fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
+                        const OffsetFrame& frame);
 /// The places inside a piece from arc length l0 to l1 that its strip follows. They do not
 /// depend on the offsets: a piece fitted for several amplitudes needs them once.
 std::vector<ContourSample> stripSamples(const OffsetFrame& frame, double l0, double l1);
 /// fitStrip on `samples` = stripSamples(frame, piece.l0, piece.l1).
-double fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
-                const std::vector<ContourSample>& samples);
+StripDeviation fitStrip(std::vector<Point2>& points, int first, const StripPiece& piece,
+                        const std::vector<ContourSample>& samples);
 
 }  // namespace detail
 }  // namespace pacemod

@@ -130,6 +130,26 @@ TEST(PacemodGlyphTest, SinePeaksBesideAConcaveCornerFollowTheSpreadOffset) {
   EXPECT_EQ(check.new_sharp_turns, 0);
 }
 
+// A sawtooth flank from an icon corner over a bend (brain curve 2, lungs; 46 px at 2 waves/10
+// mm) left the contour's offset by 0.45 px in its half away from the corner as one cubic: lobes
+// of 1.33 and 1.23 px for 1.02.
+TEST(PacemodGlyphTest, LongSawtoothFlanksFromACornerFollowTheOffsetAwayFromIt) {
+  for (const std::string icon : {"brain.svg", "lungs.svg"}) {
+    const DiffusionCurveImage original = loadDiffusionCurves(kIcons + icon, 512);
+    DiffusionCurveImage image = original;
+    const WaveSpec spec{Waveform::Sawtooth, 0.2, 0.1};
+    const std::vector<CurveWaveReport> reports =
+        applyWaves(image, selectCurves(image, {}), spec, 50.0);
+    const measure::GlyphCheck check =
+        measure::checkGlyph(original, image, reports, spec, 512 / 50.0);
+    std::string failures;
+    for (const std::string& failure : check.failures) failures += "\n  " + failure;
+    EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << icon << failures;
+    EXPECT_GT(check.full_lobes, 50) << icon;
+    EXPECT_EQ(check.new_crossings, 0) << icon;
+  }
+}
+
 TEST(PacemodGlyphTest, InvalidParametersAreRejectedNamingThem) {
   DiffusionCurveImage image = loadDiffusionCurves(kIcons + "heart.svg", 128);
   auto message = [&](const WaveSpec& spec, double size_mm, std::vector<int> curves) {
