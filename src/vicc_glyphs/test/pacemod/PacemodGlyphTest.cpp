@@ -24,6 +24,22 @@ namespace {
 const std::string kIcons = std::string(VICC_GLYPHS_DATA_DIR) + "/icons/";
 const std::string kTestData = std::string(VICC_GLYPHS_TEST_DATA_DIR) + "/";
 
+// The bench's checks of `original` with `spec` applied to all its curves at 512 px = 50 mm, and
+// its failures one per line (for the assertion messages).
+struct WavedCheck {
+  measure::GlyphCheck check;
+  std::string failures;
+};
+
+WavedCheck checkWavedGlyph(const DiffusionCurveImage& original, const WaveSpec& spec) {
+  DiffusionCurveImage image = original;
+  const std::vector<CurveWaveReport> reports =
+      applyWaves(image, selectCurves(image, {}), spec, 50.0);
+  WavedCheck result{measure::checkGlyph(original, image, reports, spec, 512 / 50.0), {}};
+  for (const std::string& failure : result.check.failures) result.failures += "\n  " + failure;
+  return result;
+}
+
 class IconWaves : public ::testing::TestWithParam<Waveform> {};
 
 TEST_P(IconWaves, CountsAmplitudesAndNoCrossingsOnRealIcons) {
@@ -97,13 +113,7 @@ TEST(PacemodGlyphTest, SubPixelStepsOfAnIconLeaveNoSpike) {
   const DiffusionCurveImage original = loadDiffusionCurves(kIcons + "weather-pouring.svg", 512);
   for (const WaveSpec& spec :
        {WaveSpec{Waveform::Rectangle, 1.2, 0.4}, WaveSpec{Waveform::Triangle, 0.8, 0.1}}) {
-    DiffusionCurveImage image = original;
-    const std::vector<CurveWaveReport> reports =
-        applyWaves(image, selectCurves(image, {}), spec, 50.0);
-    const measure::GlyphCheck check =
-        measure::checkGlyph(original, image, reports, spec, 512 / 50.0);
-    std::string failures;
-    for (const std::string& failure : check.failures) failures += "\n  " + failure;
+    const auto [check, failures] = checkWavedGlyph(original, spec);
     EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << waveformName(spec.waveform) << failures;
     EXPECT_GT(check.full_lobes, 400);
     EXPECT_EQ(check.new_crossings, 0);
@@ -116,14 +126,8 @@ TEST(PacemodGlyphTest, SubPixelStepsOfAnIconLeaveNoSpike) {
 // its own offset point, the curve bulged to 4.55 px for 4.10; left to the spread, every lobe is
 // within 10 % and nothing folds.
 TEST(PacemodGlyphTest, SinePeaksBesideAConcaveCornerFollowTheSpreadOffset) {
-  const DiffusionCurveImage original = loadDiffusionCurves(kIcons + "pine-tree.svg", 512);
-  DiffusionCurveImage image = original;
-  const WaveSpec spec{Waveform::Sine, 0.2, 0.4};
-  const std::vector<CurveWaveReport> reports =
-      applyWaves(image, selectCurves(image, {}), spec, 50.0);
-  const measure::GlyphCheck check = measure::checkGlyph(original, image, reports, spec, 512 / 50.0);
-  std::string failures;
-  for (const std::string& failure : check.failures) failures += "\n  " + failure;
+  const auto [check, failures] = checkWavedGlyph(loadDiffusionCurves(kIcons + "pine-tree.svg", 512),
+                                                 {Waveform::Sine, 0.2, 0.4});
   EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << failures;
   EXPECT_GT(check.full_lobes, 50);
   EXPECT_EQ(check.new_crossings, 0);
@@ -135,15 +139,8 @@ TEST(PacemodGlyphTest, SinePeaksBesideAConcaveCornerFollowTheSpreadOffset) {
 // of 1.33 and 1.23 px for 1.02.
 TEST(PacemodGlyphTest, LongSawtoothFlanksFromACornerFollowTheOffsetAwayFromIt) {
   for (const std::string icon : {"brain.svg", "lungs.svg"}) {
-    const DiffusionCurveImage original = loadDiffusionCurves(kIcons + icon, 512);
-    DiffusionCurveImage image = original;
-    const WaveSpec spec{Waveform::Sawtooth, 0.2, 0.1};
-    const std::vector<CurveWaveReport> reports =
-        applyWaves(image, selectCurves(image, {}), spec, 50.0);
-    const measure::GlyphCheck check =
-        measure::checkGlyph(original, image, reports, spec, 512 / 50.0);
-    std::string failures;
-    for (const std::string& failure : check.failures) failures += "\n  " + failure;
+    const auto [check, failures] =
+        checkWavedGlyph(loadDiffusionCurves(kIcons + icon, 512), {Waveform::Sawtooth, 0.2, 0.1});
     EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << icon << failures;
     EXPECT_GT(check.full_lobes, 50) << icon;
     EXPECT_EQ(check.new_crossings, 0) << icon;
