@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <set>
+#include <utility>
 
 #include "gradient_channels.hpp"
 #include "vicc_glyphs/io/format_error.hpp"
@@ -274,6 +275,25 @@ void applyGradientEncodings(DiffusionCurveImage& image, const std::vector<Active
   }
 }
 
+// The encodings of `design` with the data levels that drive them; throws DesignValueError for
+// a wrong number of levels or one out of range.
+std::vector<Active> activeEncodings(const GlyphDesign& design, const std::vector<int>& levels) {
+  if (levels.size() != design.variables.size()) {
+    throw DesignValueError("design " + design.name + " needs " +
+                           std::to_string(design.variables.size()) + " levels");
+  }
+  std::vector<Active> active;
+  for (size_t v = 0; v < levels.size(); ++v) {
+    const DesignVariable& variable = design.variables[v];
+    if (levels[v] < 0 || levels[v] >= variable.levelCount()) {
+      throw DesignValueError(variable.name + ": level " + std::to_string(levels[v]) +
+                             " out of range");
+    }
+    for (const Encoding& encoding : variable.encodings) active.push_back({&encoding, levels[v]});
+  }
+  return active;
+}
+
 }  // namespace
 
 DiffusionCurveImage loadIcon(const GlyphDesign& design, int size_px) {
@@ -292,20 +312,14 @@ DiffusionCurveImage loadIcon(const GlyphDesign& design, int size_px) {
 
 DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>& levels,
                                const perception::PerceptionModel& model, int size_px) {
-  if (levels.size() != design.variables.size()) {
-    throw DesignValueError("design " + design.name + " needs " +
-                           std::to_string(design.variables.size()) + " levels");
-  }
-  std::vector<Active> active;
-  for (size_t v = 0; v < levels.size(); ++v) {
-    const DesignVariable& variable = design.variables[v];
-    if (levels[v] < 0 || levels[v] >= variable.levelCount()) {
-      throw DesignValueError(variable.name + ": level " + std::to_string(levels[v]) +
-                             " out of range");
-    }
-    for (const Encoding& encoding : variable.encodings) active.push_back({&encoding, levels[v]});
-  }
-  DiffusionCurveImage image = loadIcon(design, size_px);
+  activeEncodings(design, levels);  // a level out of range fails before the import
+  return buildGlyph(design, levels, model, loadIcon(design, size_px));
+}
+
+DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>& levels,
+                               const perception::PerceptionModel& model, DiffusionCurveImage icon) {
+  const std::vector<Active> active = activeEncodings(design, levels);
+  DiffusionCurveImage image = std::move(icon);
   const size_t icon_curves = image.curves.size();
   std::set<int> hidden;
   for (const Active& a : active) {

@@ -16,6 +16,7 @@ namespace vicc_glyphs::ros_glyph {
 namespace {
 
 constexpr int kMaxSize = 4096;
+constexpr std::size_t kMaxIconSizes = 8;  // imported icons kept per design
 
 /// share/vicc_glyphs/<relative> of the devel or install space that holds this library.
 std::string packageFile(const std::string& relative) {
@@ -91,14 +92,22 @@ void GlyphServer::onSubscribe(const std::string& design,
   if (entry.latest) pub.publish(entry.latest);
 }
 
-cv::Mat GlyphServer::renderCached(const DesignEntry& entry, const std::vector<int>& levels,
-                                  int size) {
+const DiffusionCurveImage& GlyphServer::icon(DesignEntry& entry, int size) {
+  auto found = entry.icons.find(size);
+  if (found != entry.icons.end()) return found->second;
+  // Clients asking for ever new sizes must not grow the memory without bound.
+  if (entry.icons.size() >= kMaxIconSizes) entry.icons.clear();
+  return entry.icons.emplace(size, design::loadIcon(entry.design, size)).first->second;
+}
+
+cv::Mat GlyphServer::renderCached(DesignEntry& entry, const std::vector<int>& levels, int size) {
   std::vector<int> key_levels = levels;
   key_levels.push_back(size);
   const CacheKey key{entry.design.name, key_levels};
   const auto found = cache_.find(key);
   if (found != cache_.end()) return found->second;
-  const DiffusionCurveImage image = design::buildGlyph(entry.design, levels, model_, size);
+  const DiffusionCurveImage image =
+      design::buildGlyph(entry.design, levels, model_, icon(entry, size));
   RenderOptions options;
   options.background = entry.design.background;
   RenderResult result;

@@ -162,10 +162,11 @@ int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out,
     DiffusionCurveRenderer renderer;
     RenderOptions options;
     options.background = glyph.background;
+    const DiffusionCurveImage icon = design::loadIcon(glyph, glyph_size);  // once for the map
     for (size_t i = 0; i < rows.size(); ++i) {
       const std::vector<int> levels = glyph.levelsFor(rows[i].values);
       RenderResult result;
-      renderer.render(design::buildGlyph(glyph, levels, model, glyph_size), options, result);
+      renderer.render(design::buildGlyph(glyph, levels, model, icon), options, result);
       cv::Mat bgr;
       cv::cvtColor(toRgb8(result.image), bgr, cv::COLOR_RGB2BGR);
       stamp(map, bgr, centres[i], rows[i].label);

@@ -168,6 +168,34 @@ TEST(DesignBuild, RendersAtTheRequestedSize) {
   EXPECT_THROW(buildGlyph(design, {1}, model()), DesignValueError);
 }
 
+// The glyph server and the map import a design's icon once and build every glyph on it.
+TEST(DesignBuild, AnIconImportedOnceBuildsTheSameGlyphs) {
+  for (const std::string name : {"rain_forecast_sine", "intracranial_pressure", "covid19_gradient",
+                                 "rain_forecast_dashes"}) {
+    const GlyphDesign design = shipped(name);
+    const DiffusionCurveImage icon = loadIcon(design, 192);
+    std::vector<int> levels(design.variables.size());
+    for (size_t v = 0; v < levels.size(); ++v) levels[v] = design.variables[v].levelCount() - 1;
+    const DiffusionCurveImage loaded = buildGlyph(design, levels, model(), 192);
+    const DiffusionCurveImage reused = buildGlyph(design, levels, model(), icon);
+    ASSERT_EQ(loaded.curves.size(), reused.curves.size()) << name;
+    for (size_t c = 0; c < loaded.curves.size(); ++c) {
+      EXPECT_TRUE(sameGeometry(loaded.curves[c], reused.curves[c])) << name << " curve " << c;
+      EXPECT_EQ(loaded.curves[c].left_colors.size(), reused.curves[c].left_colors.size());
+    }
+    EXPECT_THROW(buildGlyph(design, std::vector<int>(levels.size(), -1), model(), icon),
+                 DesignValueError);
+  }
+}
+
+// A level out of range is the error, not the import (which it would otherwise wait for).
+TEST(DesignBuild, ALevelOutOfRangeFailsBeforeTheIconIsRead) {
+  GlyphDesign design = shipped("rain_forecast_sine");
+  design.icon_path = "/nonexistent/icon.svg";
+  EXPECT_THROW(buildGlyph(design, {9, 0}, model()), DesignValueError);
+  EXPECT_ANY_THROW(buildGlyph(design, {0, 0}, model()));
+}
+
 TEST(DesignBuild, Covid19GradientGlyphAddsBandAndDashedCentre) {
   const GlyphDesign design = shipped("covid19_gradient");
   const DiffusionCurveImage icon = loadIcon(design, 192);

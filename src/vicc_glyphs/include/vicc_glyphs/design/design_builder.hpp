@@ -22,4 +22,9 @@ DiffusionCurveImage loadIcon(const GlyphDesign& design, int size_px);
 DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>& levels,
                                const perception::PerceptionModel& model, int size_px = 0);
 
+/// The same on `icon`, the design's icon as loadIcon returns it: a caller that builds many
+/// glyphs of one design (the glyph server, the map) imports it once instead of for every glyph.
+DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>& levels,
+                               const perception::PerceptionModel& model, DiffusionCurveImage icon);
+
 }  // namespace vicc_glyphs::design

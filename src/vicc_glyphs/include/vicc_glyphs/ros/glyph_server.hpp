@@ -25,6 +25,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "vicc_glyphs/dci/diffusion_curve.hpp"
 #include "vicc_glyphs/design/glyph_design.hpp"
 #include "vicc_glyphs/perception/perception_model.hpp"
 #include "vicc_glyphs/render/renderer.hpp"
@@ -69,10 +70,15 @@ class GlyphServer {
     design::GlyphDesign design;
     image_transport::Publisher publisher;
     sensor_msgs::ImagePtr latest;
+    /// The imported icon per requested size (0: the design's), so that a glyph not in the
+    /// cache costs PACEMOD and the rendering but no import (at most 8 sizes).
+    std::map<int, DiffusionCurveImage> icons;
   };
   using CacheKey = std::pair<std::string, std::vector<int>>;  // design, levels + size
 
-  cv::Mat renderCached(const DesignEntry& entry, const std::vector<int>& levels, int size);
+  cv::Mat renderCached(DesignEntry& entry, const std::vector<int>& levels, int size);
+  /// The entry's icon at `size` (imported on first use).
+  const DiffusionCurveImage& icon(DesignEntry& entry, int size);
   void onSubscribe(const std::string& design,
                    const image_transport::SingleSubscriberPublisher& pub);
 
