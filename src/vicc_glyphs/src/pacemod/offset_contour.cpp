@@ -48,20 +48,27 @@ std::vector<cv::Point> gridPolygon(const Polyline& contour, const Grid& grid) {
   return polygon;
 }
 
-// Signed distance in grid pixels: negative inside the contour's region, positive outside;
-// each side's transform measures to the nearest pixel centre of the other side, so half a
-// pixel is taken off to put the zero level on the boundary between them.
-cv::Mat signedDistance(const Polyline& contour, const Grid& grid) {
+// The grid pixels within signed distance `offset` (grid pixels; negative inside the contour's
+// region) of the contour. Each side's distance transform measures to the nearest pixel centre of
+// the other side, so half a pixel is taken off to put the zero level on the boundary between
+// them. Only one side's transform matters: inflating, every inside pixel belongs to the region
+// and an outside one by its distance to the inside; shrinking (or 0), no outside pixel does and
+// an inside one by its distance to the outside.
+cv::Mat regionWithin(const Polyline& contour, const Grid& grid, double offset) {
   cv::Mat inside = cv::Mat::zeros(grid.size, CV_8U);
   cv::fillPoly(inside, std::vector<std::vector<cv::Point>>{gridPolygon(contour, grid)}, 255,
                cv::LINE_8, kSubpixelBits);
-  cv::Mat to_outside, to_inside;
-  cv::distanceTransform(inside, to_outside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  cv::distanceTransform(255 - inside, to_inside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  cv::Mat field = to_inside - to_outside;
-  cv::subtract(field, 0.5, field, inside == 0);
-  cv::add(field, 0.5, field, inside);
-  return field;
+  cv::Mat field;
+  if (offset > 0.0) {
+    cv::distanceTransform(255 - inside, field, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+    cv::subtract(field, 0.5, field, inside == 0);  // 0 inside
+  } else {
+    cv::Mat to_outside;
+    cv::distanceTransform(inside, to_outside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+    field = -to_outside;
+    cv::add(field, 0.5, field, inside);  // 0 outside
+  }
+  return field < offset;
 }
 
 // The region's isoline traced on `grid` (see offsetIsoline).
@@ -96,8 +103,7 @@ Polyline offsetIsolineAvoiding(const Polyline& contour, double offset,
   if (limited) *limited = false;
   if (contour.size() < 4 || !std::isfinite(offset)) return {};
   const Grid grid = gridAround(contour, std::max(offset, 0.0) + 3.0, grid_scale);
-  const cv::Mat field = signedDistance(contour, grid);
-  cv::Mat region = field < offset * grid.scale;
+  cv::Mat region = regionWithin(contour, grid, offset * grid.scale);
   std::vector<std::vector<cv::Point>> polygons;
   for (const Polyline& obstacle : obstacles) {
     if (obstacle.size() >= 4) polygons.push_back(gridPolygon(obstacle, grid));
@@ -126,7 +132,18 @@ std::vector<Point2> closedBezierFit(const Polyline& line, double knot_spacing) {
   const std::vector<double> parameters = bspline::chordLengthParameters(line, 0.0, 1.0);
   const std::vector<double> knots =
       bspline::BSplineCurve::clampedUniformKnots(3, spans + 3, 0.0, 1.0);
-  bspline::BSplineCurve fit = bspline::leastSquaresFit(3, knots, line, parameters);
+  // Banded normal equations: tens of points per span determine the curve well, and a sparse QR
+  // of a traced isoline (thousands of points) cost as much as the distance transform.
+  const bspline::CubicLeastSquares solver(
+      bspline::BSplineCurve(3, knots, std::vector<Point2>(knots.size() - 4, Point2::Zero())),
+      parameters);
+  Eigen::MatrixX2d targets(static_cast<Eigen::Index>(line.size()), 2);
+  for (std::size_t i = 0; i < line.size(); ++i) targets.row(static_cast<Eigen::Index>(i)) = line[i];
+  const Eigen::MatrixX2d solved = solver.solve(targets);
+  std::vector<Point2> control(static_cast<std::size_t>(solved.rows()));
+  for (Eigen::Index i = 0; i < solved.rows(); ++i)
+    control[static_cast<std::size_t>(i)] = solved.row(i);
+  bspline::BSplineCurve fit(3, knots, std::move(control));
   // Close it exactly with equal end tangents (the fit leaves both ends free).
   const Point2 start = 0.5 * (fit.pointAt(0.0) + fit.pointAt(1.0));
   const Point2 tangent = 0.5 * (fit.derivativeAt(0.0) + fit.derivativeAt(1.0));

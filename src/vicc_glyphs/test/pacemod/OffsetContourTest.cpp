@@ -30,6 +30,7 @@ TEST(OffsetContourTest, IsolinesOfACircleAreConcentricCirclesWithTheSameOrientat
     expectRadius(inflated, 46.0, 0.3);
     const Polyline shrunk = offsetIsoline(circle, -10.0);
     expectRadius(shrunk, 30.0, 0.3);
+    expectRadius(offsetIsoline(circle, 0.0), 40.0, 0.3);  // the region itself
     EXPECT_EQ(polylineArea(inflated) > 0, polylineArea(circle) > 0);
     EXPECT_EQ(polylineArea(shrunk) > 0, polylineArea(circle) > 0);
   }
