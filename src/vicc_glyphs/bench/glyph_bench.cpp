@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_timing.hpp"
 #include "direct_reference_solve.hpp"
 #include "vicc_common/command_line.hpp"
 #include "vicc_glyphs/io/load.hpp"
@@ -38,19 +39,6 @@ struct Measurement {
   int curves = 0;
 };
 
-// CPU time of this thread: unlike wall time it does not count other processes sharing the
-// core (the bench machine is shared).
-double threadCpuMilliseconds() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return now.tv_sec * 1e3 + now.tv_nsec * 1e-6;
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
-
 Measurement measure(const std::string& path, int size, int repeats, double tolerance) {
   const DiffusionCurveImage image = loadDiffusionCurves(path, size);
   Measurement m;
@@ -61,19 +49,19 @@ Measurement measure(const std::string& path, int size, int repeats, double toler
   if (tolerance >= 0.0) options.multigrid.tolerance = tolerance;
   std::vector<double> totals, cpu, solves;
   for (int k = 0; k < repeats + 1; ++k) {
-    const double cpu_start = threadCpuMilliseconds();
+    const double cpu_start = bench::threadCpuMilliseconds();
     renderer.render(image, options, result);
     if (k == 0) {  // a one-shot render (as the CLI's): it also pays for first-touch page faults
       m.one_shot_ms = result.report.timings.total_ms;
       continue;
     }
-    cpu.push_back(threadCpuMilliseconds() - cpu_start);
+    cpu.push_back(bench::threadCpuMilliseconds() - cpu_start);
     totals.push_back(result.report.timings.total_ms);
     solves.push_back(result.report.timings.solve_ms);
   }
-  m.median_ms = median(totals);
-  m.median_cpu_ms = median(cpu);
-  m.median_solve_ms = median(solves);
+  m.median_ms = bench::median(totals);
+  m.median_cpu_ms = bench::median(cpu);
+  m.median_solve_ms = bench::median(solves);
   m.levels = result.report.multigrid.levels;
   m.cycles = result.report.multigrid.fine_cycles;
   m.converged = result.report.multigrid.converged;

@@ -15,7 +15,7 @@ target_link_libraries(vicc_glyph vicc_glyphs_render vicc_glyphs_io vicc_common_c
 # Median render time, multigrid cycles and error against the direct solve per input.
 add_executable(vicc_glyph_bench bench/glyph_bench.cpp)
 target_compile_options(vicc_glyph_bench PRIVATE ${VICC_WARNINGS})
-target_include_directories(vicc_glyph_bench PRIVATE test/render)
+target_include_directories(vicc_glyph_bench PRIVATE test/render bench)
 target_link_libraries(vicc_glyph_bench vicc_glyphs_render_reference vicc_glyphs_io vicc_common_cli)
 # Per-iteration residual, error estimate and error against the direct solve.
 add_executable(vicc_glyph_convergence bench/convergence_history.cpp)

@@ -27,6 +27,18 @@ if(TARGET vicc_glyph)
   target_link_libraries(vicc_glyph vicc_glyphs_design)
 endif()
 
+# The designs' build and render times (bench/design/design_bench.cpp; not run by make test).
+if(TARGET vicc_glyph)
+  add_executable(vicc_glyphs_design_bench bench/design/design_bench.cpp)
+  target_compile_options(vicc_glyphs_design_bench PRIVATE ${VICC_WARNINGS})
+  target_include_directories(vicc_glyphs_design_bench PRIVATE bench)
+  target_compile_definitions(vicc_glyphs_design_bench PRIVATE
+    VICC_GLYPHS_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config"
+    VICC_GLYPHS_DESIGNS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/designs")
+  target_link_libraries(vicc_glyphs_design_bench vicc_glyphs_design vicc_glyphs_render
+    vicc_common_cli)
+endif()
+
 if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(vicc_glyphs_design_test
     test/design/GlyphDesignTest.cpp

@@ -56,6 +56,7 @@ if(TARGET vicc_glyphs_render AND TARGET vicc_glyphs_io)
 
   add_executable(vicc_glyphs_pacemod_bench bench/pacemod/pacemod_bench.cpp)
   target_compile_options(vicc_glyphs_pacemod_bench PRIVATE ${VICC_WARNINGS})
+  target_include_directories(vicc_glyphs_pacemod_bench PRIVATE bench)
   target_compile_definitions(vicc_glyphs_pacemod_bench PRIVATE
     VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
   target_link_libraries(vicc_glyphs_pacemod_bench vicc_glyphs_pacemod_measure vicc_glyphs_io vicc_common_cli

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_timing.hpp"
 #include "contour_overlay.hpp"
 #include "vicc_common/command_line.hpp"
 #include "vicc_glyphs/io/load.hpp"
@@ -36,13 +37,6 @@ namespace {
 constexpr int kSize = 512;
 constexpr double kSizeMm = 50.0;
 
-// CPU time of this thread: "one core", independent of other processes on a shared machine.
-double threadMilliseconds() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return now.tv_sec * 1e3 + now.tv_nsec * 1e-6;
-}
-
 bool verbose = false;
 bool render_glyphs = true;  // --no-render: checks only (faster searches for failures)
 WaveOptions options;
@@ -56,47 +50,17 @@ struct Totals {
   std::vector<double> total_ms, modify_ms, render_ms;
 };
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-double percentile95(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[std::min(v.size() - 1, static_cast<std::size_t>(0.95 * v.size()))];
-}
-
-// The machine's load average (1, 5, 15 min): the CPU times are per thread, but a loaded machine
-// still slows them (shared caches, hyper-threads).
-std::string loadAverage() {
-  std::FILE* file = std::fopen("/proc/loadavg", "r");
-  char text[64] = "unknown";
-  if (file) {
-    if (!std::fgets(text, sizeof text, file)) std::snprintf(text, sizeof text, "unknown");
-    std::fclose(file);
-  }
-  std::string load = text;
-  const std::size_t cut = load.find(' ', load.find(' ', load.find(' ') + 1) + 1);
-  return cut == std::string::npos ? load : load.substr(0, cut);
-}
-
-double maximum(const std::vector<double>& v) {
-  return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
-}
-
 void runGlyph(const fs::path& icon, const WaveSpec& spec, DiffusionCurveRenderer& renderer,
               RenderResult& result, Totals& totals) {
-  const double start = threadMilliseconds();
+  const double start = bench::threadCpuMilliseconds();
   DiffusionCurveImage image = loadDiffusionCurves(icon.string(), kSize);
   const DiffusionCurveImage original = image;
-  const double modify_start = threadMilliseconds();
+  const double modify_start = bench::threadCpuMilliseconds();
   const std::vector<CurveWaveReport> reports =
       applyWaves(image, selectCurves(image, {}), spec, kSizeMm, options);
-  const double render_start = threadMilliseconds();
+  const double render_start = bench::threadCpuMilliseconds();
   if (render_glyphs) renderer.render(image, RenderOptions{}, result);
-  const double end = threadMilliseconds();
+  const double end = bench::threadCpuMilliseconds();
   totals.modify_ms.push_back(render_start - modify_start);
   totals.render_ms.push_back(end - render_start);
   totals.total_ms.push_back(end - start);
@@ -176,8 +140,8 @@ void printRow(const std::string& label, const Totals& t) {
       c.reduced_count_ok, c.reduced_decidable, c.reduced_undecidable, c.full_lobes_ok, c.full_lobes,
       100.0 * c.median_full_error(), 100.0 * c.worst_full_error, c.reduced_lobes_ok,
       c.reduced_lobes, 100.0 * c.worst_reduced_error, c.reduced_peaks, c.crossing_peaks,
-      c.new_crossings, c.new_sharp_turns, median(t.modify_ms), median(t.render_ms),
-      median(t.total_ms), percentile95(t.total_ms), maximum(t.total_ms));
+      c.new_crossings, c.new_sharp_turns, bench::median(t.modify_ms), bench::median(t.render_ms),
+      bench::median(t.total_ms), bench::percentile95(t.total_ms), bench::maximum(t.total_ms));
 }
 
 namespace cli = vicc_common::cli;
@@ -252,7 +216,7 @@ int run(const std::vector<std::string>& args) {
   RenderResult result;
   std::map<std::string, Totals> by_waveform;
   std::printf("%zu icons, %d px = %.0f mm, load average at the start %s\n\n", icons.size(), kSize,
-              kSizeMm, loadAverage().c_str());
+              kSizeMm, bench::loadAverage().c_str());
   printHeader("waveform, waves/10 mm, amplitude mm");
   for (Waveform waveform :
        {Waveform::Sine, Waveform::Triangle, Waveform::Sawtooth, Waveform::Rectangle}) {
@@ -277,7 +241,7 @@ int run(const std::vector<std::string>& args) {
   std::printf("\n");
   printHeader("waveform (all frequencies and amplitudes)");
   for (const auto& [name, totals] : by_waveform) printRow(name, totals);
-  std::printf("\nload average at the end %s\n", loadAverage().c_str());
+  std::printf("\nload average at the end %s\n", bench::loadAverage().c_str());
   return 0;
 }
 
