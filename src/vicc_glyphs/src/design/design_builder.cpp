@@ -259,16 +259,17 @@ std::vector<int> without(const std::vector<int>& curves, const std::set<int>& hi
 // Band and centre region of the gradient glyph, on the (possibly waved) contours.
 void applyGradientEncodings(DiffusionCurveImage& image, const std::vector<Active>& active,
                             const std::set<int>& hidden, const GlyphDesign& design) {
+  ContourInsets insets(design.size_mm);  // the band and the centre share a distance field
   for (const Active& a : active) {
     const Encoding& e = *a.encoding;
     if (e.channel != Channel::Band && e.channel != Channel::CentreDashes) continue;
     const size_t level = static_cast<size_t>(a.level);
     for (int index : without(pacemod::selectCurves(image, e.curves), hidden)) {
       if (e.channel == Channel::Band) {
-        addContourBand(image, index, e.band_mm, e.value_factors[level], e.saturation_factors[level],
-                       design.size_mm);
+        addContourBand(image, index, insets, e.band_mm, e.value_factors[level],
+                       e.saturation_factors[level]);
       } else {
-        addDashedCentre(image, index, e.inset_mm, e.dash_counts[level], e.colors[level],
+        addDashedCentre(image, index, insets, e.inset_mm, e.dash_counts[level], e.colors[level],
                         design.size_mm);
       }
     }

@@ -38,14 +38,17 @@ Color scaledValueAndSaturation(const Color& rgb, double value_factor, double sat
   return result;
 }
 
-// A new closed curve on the isoline `offset_mm` inside curve `index`, with the orientation of
-// that curve.
-DiffusionCurve insetCurve(const DiffusionCurveImage& image, int index, double offset_mm,
-                          double glyph_size_mm) {
-  const DiffusionCurve& contour = image.curves.at(static_cast<size_t>(index));
-  const double pixels_per_mm = image.width / glyph_size_mm;
-  const pacemod::Polyline line =
-      pacemod::offsetIsoline(pacemod::sampleCurve(contour), -offset_mm * pixels_per_mm);
+}  // namespace
+
+DiffusionCurve ContourInsets::inset(const DiffusionCurveImage& image, int index, double offset_mm) {
+  auto field = fields_.find(index);
+  if (field == fields_.end()) {
+    const pacemod::Polyline contour =
+        pacemod::sampleCurve(image.curves.at(static_cast<size_t>(index)));
+    field = fields_.emplace(index, pacemod::InsideDistance(contour)).first;
+  }
+  const double pixels_per_mm = image.width / glyph_size_mm_;
+  const pacemod::Polyline line = field->second.isoline(-offset_mm * pixels_per_mm);
   if (line.size() < 4) {
     throw std::invalid_argument("curve " + std::to_string(index) + ": nothing is left " +
                                 std::to_string(offset_mm) + " mm inside it");
@@ -55,17 +58,15 @@ DiffusionCurve insetCurve(const DiffusionCurveImage& image, int index, double of
   return inset;
 }
 
-}  // namespace
-
 bool enclosedSideIsLeft(const DiffusionCurve& curve) {
   // Positive shoelace area = clockwise on screen (y down): the enclosed region is on the right.
   return pacemod::polylineArea(pacemod::sampleCurve(curve)) < 0.0;
 }
 
-void addContourBand(DiffusionCurveImage& image, int index, double band_mm, double value_factor,
-                    double saturation_factor, double glyph_size_mm) {
+void addContourBand(DiffusionCurveImage& image, int index, ContourInsets& insets, double band_mm,
+                    double value_factor, double saturation_factor) {
   if (value_factor == 1.0 && saturation_factor == 1.0) return;
-  DiffusionCurve band_edge = insetCurve(image, index, band_mm, glyph_size_mm);
+  DiffusionCurve band_edge = insets.inset(image, index, band_mm);
   DiffusionCurve& contour = image.curves[static_cast<size_t>(index)];
   const bool left_inside = enclosedSideIsLeft(contour);
   std::vector<ColorPoint>& contour_inside =
@@ -80,9 +81,9 @@ void addContourBand(DiffusionCurveImage& image, int index, double band_mm, doubl
   image.curves.push_back(band_edge);
 }
 
-void addDashedCentre(DiffusionCurveImage& image, int index, double inset_mm, int dashes,
-                     const Color& color, double glyph_size_mm) {
-  DiffusionCurve centre = insetCurve(image, index, inset_mm, glyph_size_mm);
+void addDashedCentre(DiffusionCurveImage& image, int index, ContourInsets& insets, double inset_mm,
+                     int dashes, const Color& color, double glyph_size_mm) {
+  DiffusionCurve centre = insets.inset(image, index, inset_mm);
   const DiffusionCurve& contour = image.curves[static_cast<size_t>(index)];
   const Color inner =
       meanColor(enclosedSideIsLeft(contour) ? contour.left_colors : contour.right_colors);

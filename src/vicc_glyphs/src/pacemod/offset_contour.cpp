@@ -16,11 +16,7 @@ namespace {
 constexpr int kMaxGrid = 2048;
 constexpr int kSubpixelBits = 8;
 
-struct Grid {
-  Point2 origin;  ///< image position of the grid's corner
-  double scale;   ///< grid pixels per image pixel
-  cv::Size size;
-};
+using Grid = detail::IsolineGrid;
 
 Grid gridAround(const Polyline& contour, double margin, double scale) {
   Point2 low = contour.front(), high = contour.front();
@@ -48,27 +44,27 @@ std::vector<cv::Point> gridPolygon(const Polyline& contour, const Grid& grid) {
   return polygon;
 }
 
-// The grid pixels within signed distance `offset` (grid pixels; negative inside the contour's
-// region) of the contour. Each side's distance transform measures to the nearest pixel centre of
-// the other side, so half a pixel is taken off to put the zero level on the boundary between
-// them. Only one side's transform matters: inflating, every inside pixel belongs to the region
-// and an outside one by its distance to the inside; shrinking (or 0), no outside pixel does and
-// an inside one by its distance to the outside.
-cv::Mat regionWithin(const Polyline& contour, const Grid& grid, double offset) {
+// The signed distance to the contour in grid pixels on the side that decides whether a pixel
+// lies within an offset of that sign, 0 on the other side: outside (`outward`: every inside
+// pixel is within an outward offset, an outside one by its distance to the inside) or inside
+// (no outside pixel is within an inward offset or 0, an inside one by its distance to the
+// outside, negative). Each side's distance transform measures to the nearest pixel centre of the
+// other side, so half a pixel is taken off to put the zero level on the boundary between them.
+cv::Mat sideField(const Polyline& contour, const Grid& grid, bool outward) {
   cv::Mat inside = cv::Mat::zeros(grid.size, CV_8U);
   cv::fillPoly(inside, std::vector<std::vector<cv::Point>>{gridPolygon(contour, grid)}, 255,
                cv::LINE_8, kSubpixelBits);
   cv::Mat field;
-  if (offset > 0.0) {
+  if (outward) {
     cv::distanceTransform(255 - inside, field, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-    cv::subtract(field, 0.5, field, inside == 0);  // 0 inside
+    cv::subtract(field, 0.5, field, inside == 0);
   } else {
     cv::Mat to_outside;
     cv::distanceTransform(inside, to_outside, cv::DIST_L2, cv::DIST_MASK_PRECISE);
     field = -to_outside;
-    cv::add(field, 0.5, field, inside);  // 0 outside
+    cv::add(field, 0.5, field, inside);
   }
-  return field < offset;
+  return field;
 }
 
 // The region's isoline traced on `grid` (see offsetIsoline).
@@ -103,7 +99,7 @@ Polyline offsetIsolineAvoiding(const Polyline& contour, double offset,
   if (limited) *limited = false;
   if (contour.size() < 4 || !std::isfinite(offset)) return {};
   const Grid grid = gridAround(contour, std::max(offset, 0.0) + 3.0, grid_scale);
-  cv::Mat region = regionWithin(contour, grid, offset * grid.scale);
+  cv::Mat region = sideField(contour, grid, offset > 0.0) < offset * grid.scale;
   std::vector<std::vector<cv::Point>> polygons;
   for (const Polyline& obstacle : obstacles) {
     if (obstacle.size() >= 4) polygons.push_back(gridPolygon(obstacle, grid));
@@ -121,6 +117,18 @@ Polyline offsetIsolineAvoiding(const Polyline& contour, double offset,
     if (limited) *limited = cv::countNonZero(region) < before;
   }
   return traceLargest(region, grid, contour);
+}
+
+InsideDistance::InsideDistance(const Polyline& contour, double grid_scale) : contour_(contour) {
+  if (contour.size() < 4) return;
+  grid_ = gridAround(contour, 3.0, grid_scale);  // offsetIsolineAvoiding's grid for offset <= 0
+  field_ = sideField(contour, grid_, false);
+}
+
+Polyline InsideDistance::isoline(double offset) const {
+  if (offset > 0.0) throw std::invalid_argument("InsideDistance::isoline: an offset > 0");
+  if (field_.empty() || !std::isfinite(offset)) return {};
+  return traceLargest(field_ < offset * grid_.scale, grid_, contour_);
 }
 
 std::vector<Point2> closedBezierFit(const Polyline& line, double knot_spacing) {

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "vicc_glyphs/pacemod/offset_contour.hpp"
 
@@ -34,6 +35,19 @@ TEST(OffsetContourTest, IsolinesOfACircleAreConcentricCirclesWithTheSameOrientat
     EXPECT_EQ(polylineArea(inflated) > 0, polylineArea(circle) > 0);
     EXPECT_EQ(polylineArea(shrunk) > 0, polylineArea(circle) > 0);
   }
+}
+
+// One distance field for several insets of one contour: the same isolines as offsetIsoline.
+TEST(OffsetContourTest, InsideDistanceGivesOffsetIsolinesInsideFromOneField) {
+  const Polyline circle = circlePolygon(40, true);
+  const InsideDistance inside(circle);
+  for (double offset : {0.0, -3.0, -10.0, -25.5}) {
+    EXPECT_EQ(inside.isoline(offset), offsetIsoline(circle, offset)) << offset;
+  }
+  expectRadius(inside.isoline(-10.0), 30.0, 0.3);
+  EXPECT_TRUE(inside.isoline(-45.0).empty());
+  EXPECT_THROW(inside.isoline(1.0), std::invalid_argument);
+  EXPECT_TRUE(InsideDistance({}).isoline(-1.0).empty());
 }
 
 TEST(OffsetContourTest, ShrinkingPastTheRegionLeavesNothing) {

@@ -6,6 +6,7 @@
 // (least squares, then Fowler-Bartels pins the closing point and equal end tangents), which
 // becomes a Bezier chain.
 
+#include <opencv2/core.hpp>
 #include <vector>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
@@ -26,6 +27,31 @@ Polyline offsetIsoline(const Polyline& contour, double offset, double grid_scale
 Polyline offsetIsolineAvoiding(const Polyline& contour, double offset,
                                const std::vector<Polyline>& obstacles, double clearance,
                                double grid_scale = 4.0, bool* limited = nullptr);
+
+namespace detail {
+/// The raster the isolines are traced on: image position of its corner, grid pixels per image
+/// pixel, size.
+struct IsolineGrid {
+  Point2 origin = Point2::Zero();
+  double scale = 1.0;
+  cv::Size size;
+};
+}  // namespace detail
+
+/// The distance field inside the region of a closed contour, for isolines at several offsets
+/// inside it: one distance transform for all of them (the gradient glyph's band and centre
+/// region are both insets of one contour).
+class InsideDistance {
+ public:
+  explicit InsideDistance(const Polyline& contour, double grid_scale = 4.0);
+  /// offsetIsoline(contour, offset, grid_scale) for an offset <= 0 (pixels).
+  Polyline isoline(double offset) const;
+
+ private:
+  Polyline contour_;
+  detail::IsolineGrid grid_;
+  cv::Mat field_;  ///< grid pixels, negative inside (0 outside)
+};
 
 /// A closed polyline (first == last point) as a closed Bezier chain (3K+1 points) of a
 /// least-squares cubic B-spline with knots about `knot_spacing` pixels apart. Throws
