@@ -104,7 +104,7 @@ std::string usage() {
 
 int run(const std::vector<std::string>& args) {
   const cli::ParsedArguments parsed = cli::parseArguments(args, kOptionSpecs);
-  const int size = static_cast<int>(parsed.number("size", 0.0, 0.0, 4096.0));
+  const int size = parsed.integer("size", 0, 0, 4096);
   const std::string model_path = parsed.value("model").empty() ? VICC_GLYPHS_CONFIG_DIR
                                      "/perception_model.yaml"
                                                                : parsed.value("model");
