@@ -66,6 +66,15 @@ GlyphServer::GlyphServer(ros::NodeHandle nh, ros::NodeHandle private_nh)
     throw std::runtime_error("parameter ~designs_dir: no design (.yaml) in " +
                              parameters_.designs_dir);
   }
+  // Each icon imported now at the design's size: a missing or broken icon stops the node with
+  // its name instead of failing every request, and the first glyph pays no import.
+  for (auto& [name, entry] : designs_) {
+    try {
+      icon(entry, 0);
+    } catch (const std::exception& e) {
+      throw std::runtime_error("design '" + name + "': " + e.what());
+    }
+  }
   // Checked before the image topics exist; their transports (e.g. compressed) keep their
   // parameters under ~<design>/image.
   std::vector<std::string> transport_namespaces;

@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <sensor_msgs/Image.h>
+#include <unistd.h>
 #include <vicc_msgs/RenderGlyph.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "vicc_common/ros_parameters.hpp"
 #include "vicc_common/ros_service_call.hpp"
@@ -128,6 +131,39 @@ TEST(GlyphServerParameters, BadParametersAreNamed) {
       std::string::npos);
   EXPECT_NE(message("perception_model", std::string("/nonexistent.yaml")).find("/nonexistent.yaml"),
             std::string::npos);
+}
+
+// A design whose icon cannot be imported stops the server at start, naming design and file
+// (it used to fail only when a glyph was requested).
+TEST(GlyphServerParameters, ADesignWithoutItsIconIsNamedAtStart) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("glyph_server_icon_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "lost_icon.yaml") << "name: lost_icon\n"
+                                           "icon: no_such_icon.svg\n"
+                                           "size_mm: 50\n"
+                                           "size_px: 64\n"
+                                           "variables:\n"
+                                           "  - name: value\n"
+                                           "    domain: [0, 1]\n"
+                                           "    edges: [0.5]\n"
+                                           "    encodings:\n"
+                                           "      - channel: fill_color\n"
+                                           "        curves: all\n"
+                                           "        replace: \"000000\"\n"
+                                           "        colors: [\"ff0000\", \"00ff00\"]\n";
+  ros::NodeHandle nh("~/lost_icon");
+  nh.setParam("designs_dir", dir.string());
+  std::string message;
+  try {
+    vicc_glyphs::ros_glyph::GlyphServer server(ros::NodeHandle(), nh);
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  nh.deleteParam("designs_dir");
+  std::filesystem::remove_all(dir);
+  EXPECT_NE(message.find("design 'lost_icon'"), std::string::npos) << message;
+  EXPECT_NE(message.find("no_such_icon.svg"), std::string::npos) << message;
 }
 
 TEST(GlyphServerParameters, KeysLeftOutTakeThePackagesFilesAndTyposAreNamed) {
