@@ -106,6 +106,15 @@ Eigen::MatrixX2d CubicLeastSquares::solve(const Eigen::MatrixX2d& targets) const
   return factor_.solve(right);
 }
 
+std::vector<Point2> CubicLeastSquares::solvePoints(const Eigen::MatrixX2d& targets) const {
+  const Eigen::MatrixX2d control = solve(targets);
+  std::vector<Point2> points(static_cast<std::size_t>(control.rows()));
+  for (Eigen::Index i = 0; i < control.rows(); ++i) {
+    points[static_cast<std::size_t>(i)] = control.row(i).transpose();
+  }
+  return points;
+}
+
 BSplineCurve leastSquaresFit(int degree, std::vector<double> knots,
                              const std::vector<Point2>& points,
                              const std::vector<double>& parameters) {

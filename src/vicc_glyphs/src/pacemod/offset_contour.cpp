@@ -147,11 +147,7 @@ std::vector<Point2> closedBezierFit(const Polyline& line, double knot_spacing) {
       parameters);
   Eigen::MatrixX2d targets(static_cast<Eigen::Index>(line.size()), 2);
   for (std::size_t i = 0; i < line.size(); ++i) targets.row(static_cast<Eigen::Index>(i)) = line[i];
-  const Eigen::MatrixX2d solved = solver.solve(targets);
-  std::vector<Point2> control(static_cast<std::size_t>(solved.rows()));
-  for (Eigen::Index i = 0; i < solved.rows(); ++i)
-    control[static_cast<std::size_t>(i)] = solved.row(i);
-  bspline::BSplineCurve fit(3, knots, std::move(control));
+  bspline::BSplineCurve fit(3, knots, solver.solvePoints(targets));
   // Close it exactly with equal end tangents (the fit leaves both ends free).
   const Point2 start = 0.5 * (fit.pointAt(0.0) + fit.pointAt(1.0));
   const Point2 tangent = 0.5 * (fit.derivativeAt(0.0) + fit.derivativeAt(1.0));

@@ -202,10 +202,7 @@ bspline::BSplineCurve OffsetFit::fit(const Offset& offset,
     }
     targets.row(static_cast<int>(i)) = q.transpose();
   }
-  const Eigen::MatrixX2d control = solver_->solve(targets);
-  std::vector<Point2> points(control.rows());
-  for (int i = 0; i < control.rows(); ++i) points[i] = control.row(i).transpose();
-  return bspline::BSplineCurve(3, knots_, std::move(points));
+  return bspline::BSplineCurve(3, knots_, solver_->solvePoints(targets));
 }
 
 }  // namespace detail

@@ -47,6 +47,8 @@ class CubicLeastSquares {
   int parameterCount() const { return static_cast<int>(rows_.size()); }
   /// The de Boor points for one target point per parameter (row i for parameters[i]).
   Eigen::MatrixX2d solve(const Eigen::MatrixX2d& targets) const;
+  /// solve() as a list of de Boor points.
+  std::vector<Point2> solvePoints(const Eigen::MatrixX2d& targets) const;
 
  private:
   int control_count_ = 0;
