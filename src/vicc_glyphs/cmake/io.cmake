@@ -45,8 +45,6 @@ target_link_libraries(vicc_glyphs_io vicc_glyphs_formats vicc_glyphs_png ${VICC_
 
 # The SVG painting model on polygons: Clipper (Debian libpolyclipping-dev, pkg-config polyclipping)
 # for boolean operations and stroke offsetting (Boost licence: fine in the formats library).
-find_package(PkgConfig REQUIRED)
-pkg_check_modules(VICC_GLYPHS_POLYCLIPPING REQUIRED polyclipping)
 target_sources(vicc_glyphs_formats PRIVATE
   src/io/clipper_geometry.cpp
   src/io/paint_map.cpp

@@ -1,5 +1,5 @@
 # PACEMOD (thesis 6.2.3-6.2.4): periodic contour modifications of diffusion curve icons.
-# ROS-free: the DCI, the B-spline toolkit and OpenCV (distance transform). Included after
+# ROS-free: the DCI, the B-spline toolkit, OpenCV (distance transform) and Clipper (isolines). Included after
 # cli.cmake, as it adds the `modify` subcommand to vicc_glyph.
 if(NOT TARGET vicc_glyphs_bspline)
   message(STATUS "vicc_glyphs: PACEMOD needs the B-spline toolkit; not built")
@@ -29,7 +29,9 @@ add_library(vicc_glyphs_pacemod
 )
 target_compile_options(vicc_glyphs_pacemod PRIVATE ${VICC_WARNINGS})
 target_include_directories(vicc_glyphs_pacemod SYSTEM PUBLIC ${OpenCV_INCLUDE_DIRS})
-target_link_libraries(vicc_glyphs_pacemod vicc_glyphs_bspline vicc_glyphs_dci ${VICC_GLYPHS_OPENCV})
+target_include_directories(vicc_glyphs_pacemod SYSTEM PRIVATE ${VICC_GLYPHS_POLYCLIPPING_INCLUDE_DIRS})
+target_link_libraries(vicc_glyphs_pacemod vicc_glyphs_bspline vicc_glyphs_dci ${VICC_GLYPHS_OPENCV}
+  ${VICC_GLYPHS_POLYCLIPPING_LIBRARIES})
 
 install(TARGETS vicc_glyphs_pacemod
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}

@@ -259,7 +259,7 @@ std::vector<int> without(const std::vector<int>& curves, const std::set<int>& hi
 // Band and centre region of the gradient glyph, on the (possibly waved) contours.
 void applyGradientEncodings(DiffusionCurveImage& image, const std::vector<Active>& active,
                             const std::set<int>& hidden, const GlyphDesign& design) {
-  ContourInsets insets(design.size_mm);  // the band and the centre share a distance field
+  ContourInsets insets(design.size_mm);  // the band and the centre share a sampled contour
   for (const Active& a : active) {
     const Encoding& e = *a.encoding;
     if (e.channel != Channel::Band && e.channel != Channel::CentreDashes) continue;

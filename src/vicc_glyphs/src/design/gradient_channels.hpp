@@ -1,5 +1,5 @@
 #pragma once
-// The gradient glyph's structures (thesis 6.2.5.2, Fig. 6.18A), built from distance-field
+// The gradient glyph's structures (thesis 6.2.5.2, Fig. 6.18A), built from distance
 // isolines of a closed contour (pacemod::offsetIsoline):
 // - a band along the contour, separated from the rest of the glyph by a new curve at
 //   band_mm inside; the band's colour is the glyph's inner colour with its HSV value and
@@ -15,8 +15,8 @@
 
 namespace vicc_glyphs::design {
 
-/// Closed curves inset into the closed curves of an image: one distance transform per curve,
-/// however many insets are taken from it. The curves' geometry must not change meanwhile.
+/// Closed curves inset into the closed curves of an image: each curve sampled once, however
+/// many insets are taken from it. The curves' geometry must not change meanwhile.
 class ContourInsets {
  public:
   explicit ContourInsets(double glyph_size_mm) : glyph_size_mm_(glyph_size_mm) {}
@@ -26,7 +26,7 @@ class ContourInsets {
 
  private:
   double glyph_size_mm_;
-  std::map<int, pacemod::InsideDistance> fields_;
+  std::map<int, pacemod::Polyline> contours_;
 };
 
 /// The side of a closed curve that faces the region it encloses: true = left.

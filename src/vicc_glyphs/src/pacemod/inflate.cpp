@@ -99,7 +99,7 @@ std::vector<Point2> offsetChain(const Polyline& line, double offset_px,
   for (int attempt = 0; attempt < kClearanceTries; ++attempt, clearance *= 2.0) {
     bool limited = false;
     const Polyline isoline =
-        offsetIsolineAvoiding(line, offset_px, others, clearance, 4.0, &limited);
+        offsetIsolineAvoiding(line, offset_px, others, clearance, &limited);
     if (isoline.size() < 5) {
       report.skipped = kNothingLeft;
       return {};

@@ -35,11 +35,15 @@ namespace {
 
 long long cellKey(long long x, long long y) { return (x << 32) ^ (y & 0xffffffffLL); }
 
-double squaredSegmentDistance(const Point2& point, const Point2& a, const Point2& b) {
+Point2 nearestOnSegment(const Point2& point, const Point2& a, const Point2& b) {
   const Point2 d = b - a;
   const double length2 = d.squaredNorm();
   const double t = length2 > 0.0 ? std::clamp((point - a).dot(d) / length2, 0.0, 1.0) : 0.0;
-  return (point - a - t * d).squaredNorm();
+  return a + t * d;
+}
+
+double squaredSegmentDistance(const Point2& point, const Point2& a, const Point2& b) {
+  return (point - nearestOnSegment(point, a, b)).squaredNorm();
 }
 
 }  // namespace
@@ -65,13 +69,29 @@ PolylineDistance::PolylineDistance(const Polyline& line, double cell) : line_(li
 
 double PolylineDistance::operator()(const Point2& point) const {
   if (buckets_.empty()) return distanceToPolyline(point, line_);
+  const int segment = nearestSegment(point);
+  if (segment < 0) return std::numeric_limits<double>::infinity();
+  return std::sqrt(squaredSegmentDistance(point, line_[segment], line_[segment + 1]));
+}
+
+Point2 PolylineDistance::nearest(const Point2& point, int* segment_index) const {
+  const int segment = buckets_.empty() ? -1 : nearestSegment(point);
+  if (segment_index) *segment_index = segment;
+  if (segment < 0) {
+    return line_.size() == 1 && point.allFinite() ? line_.front() : Point2::Constant(NAN);
+  }
+  return nearestOnSegment(point, line_[segment], line_[segment + 1]);
+}
+
+int PolylineDistance::nearestSegment(const Point2& point) const {
   const Point2 at = point / cell_;
-  if (!at.allFinite()) return std::numeric_limits<double>::infinity();
+  if (!at.allFinite()) return -1;
   const long long cx = std::floor(at.x()), cy = std::floor(at.y());
   // Rings beyond this one hold no cell of the polyline's bounding box.
   const long long last_ring = std::max(
       {std::abs(cx - min_x_), std::abs(cx - max_x_), std::abs(cy - min_y_), std::abs(cy - max_y_)});
   double best = std::numeric_limits<double>::infinity();
+  int best_segment = -1;
   for (long long r = 0; r <= last_ring; ++r) {
     for (long long x = cx - r; x <= cx + r; ++x) {
       const bool side = x == cx - r || x == cx + r;  // whole column; else its two ring cells
@@ -79,14 +99,15 @@ double PolylineDistance::operator()(const Point2& point) const {
         const auto found = buckets_.find(cellKey(x, y));
         if (found == buckets_.end()) continue;
         for (int i : found->second) {
-          best = std::min(best, squaredSegmentDistance(point, line_[i], line_[i + 1]));
+          const double distance2 = squaredSegmentDistance(point, line_[i], line_[i + 1]);
+          if (distance2 < best) best = distance2, best_segment = i;
         }
       }
     }
     // Any cell of ring r + 1 is at least r cells away from the point.
     if (best <= (r * cell_) * (r * cell_)) break;
   }
-  return std::sqrt(best);
+  return best_segment;
 }
 
 double polylineArea(const Polyline& line) {

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "vicc_glyphs/pacemod/offset_contour.hpp"
@@ -28,26 +30,64 @@ TEST(OffsetContourTest, IsolinesOfACircleAreConcentricCirclesWithTheSameOrientat
   for (bool clockwise : {true, false}) {
     const Polyline circle = circlePolygon(40, clockwise);
     const Polyline inflated = offsetIsoline(circle, 6.0);
-    expectRadius(inflated, 46.0, 0.3);
+    expectRadius(inflated, 46.0, 0.02);  // the circle is a 720-gon: its edges are 0.015 px in
     const Polyline shrunk = offsetIsoline(circle, -10.0);
-    expectRadius(shrunk, 30.0, 0.3);
-    expectRadius(offsetIsoline(circle, 0.0), 40.0, 0.3);  // the region itself
+    expectRadius(shrunk, 30.0, 0.02);
+    expectRadius(offsetIsoline(circle, 0.0), 40.0, 0.02);  // the region itself
     EXPECT_EQ(polylineArea(inflated) > 0, polylineArea(circle) > 0);
     EXPECT_EQ(polylineArea(shrunk) > 0, polylineArea(circle) > 0);
   }
 }
 
-// One distance field for several insets of one contour: the same isolines as offsetIsoline.
-TEST(OffsetContourTest, InsideDistanceGivesOffsetIsolinesInsideFromOneField) {
-  const Polyline circle = circlePolygon(40, true);
-  const InsideDistance inside(circle);
-  for (double offset : {0.0, -3.0, -10.0, -25.5}) {
-    EXPECT_EQ(inside.isoline(offset), offsetIsoline(circle, offset)) << offset;
+// A five-lobed flower (smooth, with tight concave bends) and a cross (convex and reflex
+// corners): every point of an isoline lies at the offset from the contour, whether the isoline
+// has corners (a cross shrunk, the flower inflated past its bends' radii) or arcs.
+TEST(OffsetContourTest, IsolinePointsLieAtTheOffsetFromTheContour) {
+  Polyline flower;
+  for (int i = 0; i <= 1000; ++i) {
+    const double angle = 2 * M_PI * i / 1000, radius = 60 + 25 * std::cos(5 * angle);
+    flower.emplace_back(150 + radius * std::cos(angle), 150 + radius * std::sin(angle));
   }
-  expectRadius(inside.isoline(-10.0), 30.0, 0.3);
-  EXPECT_TRUE(inside.isoline(-45.0).empty());
-  EXPECT_THROW(inside.isoline(1.0), std::invalid_argument);
-  EXPECT_TRUE(InsideDistance({}).isoline(-1.0).empty());
+  flower.back() = flower.front();
+  const Polyline cross = {{100, 50},  {140, 50},  {140, 100}, {190, 100}, {190, 140},
+                          {140, 140}, {140, 190}, {100, 190}, {100, 140}, {50, 140},
+                          {50, 100},  {100, 100}, {100, 50}};
+  for (const Polyline& contour : {flower, cross}) {
+    for (double offset : {-12.0, -3.0, 0.0, 2.0, 8.0}) {
+      const Polyline isoline = offsetIsoline(contour, offset);
+      ASSERT_GT(isoline.size(), 100u) << offset;
+      EXPECT_LT((isoline.front() - isoline.back()).norm(), 1e-12);
+      double largest_gap = 0.0;
+      for (std::size_t i = 0; i < isoline.size(); ++i) {
+        EXPECT_NEAR(distanceToPolyline(isoline[i], contour), std::abs(offset), 0.05)
+            << "offset " << offset << " point " << i;
+        if (i > 0) largest_gap = std::max(largest_gap, (isoline[i] - isoline[i - 1]).norm());
+      }
+      EXPECT_LE(largest_gap, 0.25 + 1e-9);
+    }
+  }
+}
+
+// An inflated square next to a neighbour keeps `clearance` from it and says so.
+TEST(OffsetContourTest, AnObstacleLimitsTheInflatedRegion) {
+  const Polyline square = {{0, 0}, {20, 0}, {20, 20}, {0, 20}, {0, 0}};
+  const Polyline neighbour = {{30, 0}, {40, 0}, {40, 20}, {30, 20}, {30, 0}};
+  bool limited = false;
+  const Polyline free = offsetIsolineAvoiding(square, 6.0, {neighbour}, 2.0, &limited);
+  EXPECT_FALSE(limited);  // 6 px from the square never comes within 2 px of x = 30
+  const Polyline stopped = offsetIsolineAvoiding(square, 9.0, {neighbour}, 2.0, &limited);
+  EXPECT_TRUE(limited);
+  double closest = 1e9;
+  for (const Point2& p : stopped) closest = std::min(closest, distanceToPolyline(p, neighbour));
+  EXPECT_NEAR(closest, 2.0, 0.02);
+  for (const Point2& p : free) EXPECT_NEAR(distanceToPolyline(p, square), 6.0, 0.02);
+}
+
+TEST(OffsetContourTest, NonFiniteInputGivesNoIsoline) {
+  Polyline circle = circlePolygon(40, true);
+  EXPECT_TRUE(offsetIsoline(circle, std::nan("")).empty());
+  circle[3].x() = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(offsetIsoline(circle, -2.0).empty());
 }
 
 TEST(OffsetContourTest, ShrinkingPastTheRegionLeavesNothing) {

@@ -1,4 +1,5 @@
-// Polyline helpers of PACEMOD: the bucketed distance query against the plain one.
+// Polyline helpers of PACEMOD: the bucketed distance and nearest-point queries against the plain
+// distance.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,10 +24,17 @@ TEST(PolylineTest, BucketedDistanceEqualsTheExhaustiveOne) {
   for (int k = 0; k < 2000; ++k) {
     const Point2 p(coordinate(random), coordinate(random));
     EXPECT_NEAR(distance(p), distanceToPolyline(p, star), 1e-9) << p.transpose();
+    int segment = -1;
+    const Point2 nearest = distance.nearest(p, &segment);
+    EXPECT_NEAR((nearest - p).norm(), distanceToPolyline(p, star), 1e-9) << p.transpose();
+    ASSERT_GE(segment, 0);  // and the point lies on the segment named
+    EXPECT_NEAR(distanceToPolyline(nearest, {star[segment], star[segment + 1]}), 0.0, 1e-9);
   }
   EXPECT_NEAR(distance(star[17]), 0.0, 1e-12);
   const Polyline empty;
   EXPECT_TRUE(std::isinf(PolylineDistance(empty)(Point2(1, 2))));
+  EXPECT_FALSE(PolylineDistance(empty).nearest(Point2(1, 2)).allFinite());
+  EXPECT_FALSE(distance.nearest(Point2(NAN, 2)).allFinite());
 }
 
 // Arc lengths on a closed contour of length 10: the shorter way round, across 0 = L as well.

@@ -24,8 +24,13 @@ class PolylineDistance {
  public:
   explicit PolylineDistance(const Polyline& line, double cell = 4.0);
   double operator()(const Point2& point) const;
+  /// The nearest point of the polyline (NaN for an empty line or a non-finite query) and, if
+  /// asked, the index of the segment it lies on (-1 for none).
+  Point2 nearest(const Point2& point, int* segment = nullptr) const;
 
  private:
+  int nearestSegment(const Point2& point) const;  ///< -1 when there is none
+
   const Polyline& line_;
   double cell_;
   long long min_x_ = 0, min_y_ = 0, max_x_ = 0, max_y_ = 0;
