@@ -43,12 +43,13 @@ Color scaledValueAndSaturation(const Color& rgb, double value_factor, double sat
 DiffusionCurve ContourInsets::inset(const DiffusionCurveImage& image, int index, double offset_mm) {
   auto contour = contours_.find(index);
   if (contour == contours_.end()) {
-    contour = contours_
-                  .emplace(index, pacemod::sampleCurve(image.curves.at(static_cast<size_t>(index))))
-                  .first;
+    contour =
+        contours_.emplace(index, pacemod::sampleCurve(image.curves.at(static_cast<size_t>(index))))
+            .first;
   }
   const double pixels_per_mm = image.width / glyph_size_mm_;
-  const pacemod::Polyline line = pacemod::offsetIsoline(contour->second, -offset_mm * pixels_per_mm);
+  const pacemod::Polyline line =
+      pacemod::offsetIsoline(contour->second, -offset_mm * pixels_per_mm);
   if (line.size() < 4) {
     throw std::invalid_argument("curve " + std::to_string(index) + ": nothing is left " +
                                 std::to_string(offset_mm) + " mm inside it");

@@ -98,8 +98,7 @@ std::vector<Point2> offsetChain(const Polyline& line, double offset_px,
   double clearance = kClearancePx;
   for (int attempt = 0; attempt < kClearanceTries; ++attempt, clearance *= 2.0) {
     bool limited = false;
-    const Polyline isoline =
-        offsetIsolineAvoiding(line, offset_px, others, clearance, &limited);
+    const Polyline isoline = offsetIsolineAvoiding(line, offset_px, others, clearance, &limited);
     if (isoline.size() < 5) {
       report.skipped = kNothingLeft;
       return {};

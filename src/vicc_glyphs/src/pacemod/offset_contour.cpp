@@ -75,8 +75,8 @@ double totalArea(const Paths& paths) {
 Polyline resampled(const Polyline& corners) {
   Polyline result;
   for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
-    const int steps = std::max(1, static_cast<int>(std::ceil(
-                                      (corners[i + 1] - corners[i]).norm() / kSpacingPx)));
+    const int steps =
+        std::max(1, static_cast<int>(std::ceil((corners[i + 1] - corners[i]).norm() / kSpacingPx)));
     for (int k = 0; k < steps; ++k) {
       result.push_back(corners[i] + (corners[i + 1] - corners[i]) * (double(k) / steps));
     }
@@ -87,9 +87,10 @@ Polyline resampled(const Polyline& corners) {
 
 // The largest polygon of `paths` as a closed polyline with points at most kSpacingPx apart.
 Polyline largestAsPolyline(const Paths& paths) {
-  const auto largest = std::max_element(paths.begin(), paths.end(), [](const Path& a, const Path& b) {
-    return std::abs(ClipperLib::Area(a)) < std::abs(ClipperLib::Area(b));
-  });
+  const auto largest =
+      std::max_element(paths.begin(), paths.end(), [](const Path& a, const Path& b) {
+        return std::abs(ClipperLib::Area(a)) < std::abs(ClipperLib::Area(b));
+      });
   if (largest == paths.end() || largest->size() < 3) return {};
   Polyline corners;
   for (const ClipperLib::IntPoint& p : *largest) {
@@ -107,7 +108,6 @@ Polyline orientedLike(Polyline line, const Polyline& contour) {
   }
   return line;
 }
-
 
 // The raster the region is traced on for offsetIsoline: image position of its corner, grid
 // pixels per image pixel, size.
