@@ -74,6 +74,7 @@ double totalArea(const Paths& paths) {
 // `corners` (closed) with points inserted so that none are more than kSpacingPx apart.
 Polyline resampled(const Polyline& corners) {
   Polyline result;
+  if (corners.size() < 2) return result;
   for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
     const int steps =
         std::max(1, static_cast<int>(std::ceil((corners[i + 1] - corners[i]).norm() / kSpacingPx)));
