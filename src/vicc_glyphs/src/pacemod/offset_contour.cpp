@@ -119,11 +119,12 @@ struct IsolineGrid {
 };
 
 // About kGridCells grid pixels across the contour's box (a finer grid for a small contour, at
-// most 4 per image pixel, never coarser than the image): the raster only has to find the
-// isoline's topology and each point within a grid pixel or two, the projection does the rest.
-// (512 cells gave the same curves at twice the cost; the approximate 5x5 distance mask is off
-// by ~2 % of the distance, which the projection removes as well.)
+// most 4 per image pixel, not coarser than the image unless that takes over kMaxGridCells): the
+// raster only has to find the isoline's topology and each point within a grid pixel or two, the
+// projection does the rest. (512 cells gave the same curves at twice the cost; the approximate 5x5
+// distance mask is off by ~2 % of the distance, which the projection removes as well.)
 constexpr double kGridCells = 256.0;
+constexpr double kMaxGridCells = 2048.0;  // a huge inflation must not allocate gigabytes
 constexpr int kSubpixelBits = 8;
 
 IsolineGrid gridAround(const Polyline& contour, double margin) {
@@ -135,7 +136,8 @@ IsolineGrid gridAround(const Polyline& contour, double margin) {
   low -= Point2::Constant(margin);
   high += Point2::Constant(margin);
   const double extent = std::max(high.x() - low.x(), high.y() - low.y());
-  const double scale = std::clamp(kGridCells / std::max(extent, 1e-9), 1.0, 4.0);
+  const double scale = std::min(std::clamp(kGridCells / std::max(extent, 1e-9), 1.0, 4.0),
+                                kMaxGridCells / std::max(extent, 1e-9));
   return {low, scale,
           cv::Size(static_cast<int>(std::ceil((high.x() - low.x()) * scale)) + 1,
                    static_cast<int>(std::ceil((high.y() - low.y()) * scale)) + 1)};

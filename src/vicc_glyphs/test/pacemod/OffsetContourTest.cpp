@@ -90,6 +90,12 @@ TEST(OffsetContourTest, NonFiniteInputGivesNoIsoline) {
   EXPECT_TRUE(offsetIsoline(circle, -2.0).empty());
 }
 
+// The raster is capped (2048 cells a side): a huge inflation stays cheap and still exact, as the
+// points are projected onto the isoline.
+TEST(OffsetContourTest, AHugeInflationIsExactOnACappedGrid) {
+  expectRadius(offsetIsoline(circlePolygon(40, true), 5000.0), 5040.0, 0.05);
+}
+
 TEST(OffsetContourTest, ShrinkingPastTheRegionLeavesNothing) {
   EXPECT_TRUE(offsetIsoline(circlePolygon(10, true), -12.0).empty());
   EXPECT_TRUE(offsetIsoline({}, 1.0).empty());
