@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace vicc_glyphs {
 namespace pacemod {
@@ -33,8 +34,6 @@ double distanceToPolyline(const Point2& point, const Polyline& line) {
 
 namespace {
 
-long long cellKey(long long x, long long y) { return (x << 32) ^ (y & 0xffffffffLL); }
-
 Point2 nearestOnSegment(const Point2& point, const Point2& a, const Point2& b) {
   const Point2 d = b - a;
   const double length2 = d.squaredNorm();
@@ -49,33 +48,60 @@ double squaredSegmentDistance(const Point2& point, const Point2& a, const Point2
 }  // namespace
 
 PolylineDistance::PolylineDistance(const Polyline& line, double cell) : line_(line), cell_(cell) {
-  bool first = true;
-  for (int i = 0; i + 1 < static_cast<int>(line.size()); ++i) {
-    const Point2 lo = line[i].cwiseMin(line[i + 1]) / cell;
-    const Point2 hi = line[i].cwiseMax(line[i + 1]) / cell;
-    if (!lo.allFinite() || !hi.allFinite()) continue;
-    const long long x0 = std::floor(lo.x()), y0 = std::floor(lo.y());
-    const long long x1 = std::floor(hi.x()), y1 = std::floor(hi.y());
-    min_x_ = first ? x0 : std::min(min_x_, x0);
-    min_y_ = first ? y0 : std::min(min_y_, y0);
-    max_x_ = first ? x1 : std::max(max_x_, x1);
-    max_y_ = first ? y1 : std::max(max_y_, y1);
-    first = false;
-    for (long long x = x0; x <= x1; ++x) {
-      for (long long y = y0; y <= y1; ++y) buckets_[cellKey(x, y)].push_back(i);
+  if (!(cell > 0.0) || !std::isfinite(cell)) {
+    throw std::invalid_argument("PolylineDistance: the cell size must be a finite number > 0");
+  }
+  Point2 lo = Point2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  const auto finite = [&](int i) { return line[i].allFinite() && line[i + 1].allFinite(); };
+  const int segments = static_cast<int>(line.size()) - 1;
+  for (int i = 0; i < segments; ++i) {
+    if (!finite(i)) continue;
+    lo = lo.cwiseMin(line[i].cwiseMin(line[i + 1]));
+    hi = hi.cwiseMax(line[i].cwiseMax(line[i + 1]));
+  }
+  if (!(lo.x() <= hi.x())) return;  // no finite segment
+  // A coarser grid finds the same nearest points; only the segments tried per query grow.
+  const auto cells = [&](double size) {
+    return (std::floor(hi.x() / size) - std::floor(lo.x() / size) + 1.0) *
+           (std::floor(hi.y() / size) - std::floor(lo.y() / size) + 1.0);
+  };
+  while (!(cells(cell_) <= kMaxCells)) cell_ *= 2.0;
+  min_x_ = static_cast<long long>(std::floor(lo.x() / cell_));
+  min_y_ = static_cast<long long>(std::floor(lo.y() / cell_));
+  max_x_ = static_cast<long long>(std::floor(hi.x() / cell_));
+  max_y_ = static_cast<long long>(std::floor(hi.y() / cell_));
+  const long long width = max_x_ - min_x_ + 1;
+  // Segment indices per cell, row-major (a counting sort: cell c holds
+  // segments_[start_[c]] ... segments_[start_[c + 1] - 1]).
+  const auto forEachCell = [&](int i, auto&& visit) {
+    const Point2 a = line[i].cwiseMin(line[i + 1]) / cell_,
+                 b = line[i].cwiseMax(line[i + 1]) / cell_;
+    for (long long y = std::floor(a.y()); y <= static_cast<long long>(std::floor(b.y())); ++y) {
+      for (long long x = std::floor(a.x()); x <= static_cast<long long>(std::floor(b.x())); ++x) {
+        visit((y - min_y_) * width + (x - min_x_));
+      }
     }
+  };
+  start_.assign(static_cast<std::size_t>(width * (max_y_ - min_y_ + 1)) + 1, 0);
+  for (int i = 0; i < segments; ++i) {
+    if (finite(i)) forEachCell(i, [&](long long c) { ++start_[c]; });
+  }
+  for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+  segments_.resize(start_.back());
+  for (int i = segments - 1; i >= 0; --i) {  // backwards: each cell keeps increasing indices
+    if (finite(i)) forEachCell(i, [&](long long c) { segments_[--start_[c]] = i; });
   }
 }
 
 double PolylineDistance::operator()(const Point2& point) const {
-  if (buckets_.empty()) return distanceToPolyline(point, line_);
+  if (segments_.empty()) return distanceToPolyline(point, line_);
   const int segment = nearestSegment(point);
   if (segment < 0) return std::numeric_limits<double>::infinity();
   return std::sqrt(squaredSegmentDistance(point, line_[segment], line_[segment + 1]));
 }
 
 Point2 PolylineDistance::nearest(const Point2& point, int* segment_index) const {
-  const int segment = buckets_.empty() ? -1 : nearestSegment(point);
+  const int segment = segments_.empty() ? -1 : nearestSegment(point);
   if (segment_index) *segment_index = segment;
   if (segment < 0) {
     return line_.size() == 1 && point.allFinite() ? line_.front() : Point2::Constant(NAN);
@@ -86,26 +112,45 @@ Point2 PolylineDistance::nearest(const Point2& point, int* segment_index) const 
 int PolylineDistance::nearestSegment(const Point2& point) const {
   const Point2 at = point / cell_;
   if (!at.allFinite()) return -1;
+  if (at.cwiseAbs().maxCoeff() > kFarCells) return nearestSegmentScanned(point);
   const long long cx = std::floor(at.x()), cy = std::floor(at.y());
-  // Rings beyond this one hold no cell of the polyline's bounding box.
+  // Rings nearer than the grid hold none of its cells, rings beyond this one none either.
+  const long long first_ring = std::max({0LL, min_x_ - cx, cx - max_x_, min_y_ - cy, cy - max_y_});
   const long long last_ring = std::max(
       {std::abs(cx - min_x_), std::abs(cx - max_x_), std::abs(cy - min_y_), std::abs(cy - max_y_)});
+  const long long width = max_x_ - min_x_ + 1;
   double best = std::numeric_limits<double>::infinity();
   int best_segment = -1;
-  for (long long r = 0; r <= last_ring; ++r) {
-    for (long long x = cx - r; x <= cx + r; ++x) {
-      const bool side = x == cx - r || x == cx + r;  // whole column; else its two ring cells
-      for (long long y = cy - r; y <= cy + r; y += side || r == 0 ? 1 : 2 * r) {
-        const auto found = buckets_.find(cellKey(x, y));
-        if (found == buckets_.end()) continue;
-        for (int i : found->second) {
-          const double distance2 = squaredSegmentDistance(point, line_[i], line_[i + 1]);
-          if (distance2 < best) best = distance2, best_segment = i;
-        }
+  const auto visit = [&](long long x, long long y) {
+    const long long c = (y - min_y_) * width + (x - min_x_);
+    for (int k = start_[c]; k < start_[c + 1]; ++k) {
+      const int i = segments_[k];
+      const double distance2 = squaredSegmentDistance(point, line_[i], line_[i + 1]);
+      if (distance2 < best) best = distance2, best_segment = i;
+    }
+  };
+  for (long long r = first_ring; r <= last_ring; ++r) {
+    const long long y0 = std::max(cy - r, min_y_), y1 = std::min(cy + r, max_y_);
+    for (long long x = std::max(cx - r, min_x_); x <= std::min(cx + r, max_x_); ++x) {
+      if (x == cx - r || x == cx + r) {  // the ring's whole column
+        for (long long y = y0; y <= y1; ++y) visit(x, y);
+      } else {  // its two cells in this column
+        if (cy - r >= min_y_) visit(x, cy - r);
+        if (r > 0 && cy + r <= max_y_) visit(x, cy + r);
       }
     }
     // Any cell of ring r + 1 is at least r cells away from the point.
     if (best <= (r * cell_) * (r * cell_)) break;
+  }
+  return best_segment;
+}
+
+int PolylineDistance::nearestSegmentScanned(const Point2& point) const {
+  double best = std::numeric_limits<double>::infinity();
+  int best_segment = -1;
+  for (int i = 0; i + 1 < static_cast<int>(line_.size()); ++i) {
+    const double distance2 = squaredSegmentDistance(point, line_[i], line_[i + 1]);
+    if (distance2 < best) best = distance2, best_segment = i;
   }
   return best_segment;
 }

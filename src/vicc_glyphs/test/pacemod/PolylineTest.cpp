@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
+#include <stdexcept>
 
 #include "vicc_glyphs/pacemod/polyline.hpp"
 
@@ -35,6 +37,22 @@ TEST(PolylineTest, BucketedDistanceEqualsTheExhaustiveOne) {
   EXPECT_TRUE(std::isinf(PolylineDistance(empty)(Point2(1, 2))));
   EXPECT_FALSE(PolylineDistance(empty).nearest(Point2(1, 2)).allFinite());
   EXPECT_FALSE(distance.nearest(Point2(NAN, 2)).allFinite());
+}
+
+// A cell far too small for the polyline's extent is coarsened (the grid stays within 4 M cells),
+// a query far outside the grid is answered by trying every segment, a bad cell is refused.
+TEST(PolylineTest, BucketedDistanceCopesWithTinyCellsAndFarQueries) {
+  const Polyline line = {{0, 0}, {300, 40}, {120, 400}, {-50, 90}};
+  const PolylineDistance tiny(line, 1e-6);
+  const PolylineDistance coarse(line, 4.0);
+  for (const Point2& p :
+       {Point2(10, 10), Point2(200, 300), Point2(1e17, -3e16), Point2(-5e15, 2)}) {
+    EXPECT_NEAR(tiny(p), distanceToPolyline(p, line), 1e-9 * (1 + p.norm())) << p.transpose();
+    EXPECT_NEAR(coarse(p), distanceToPolyline(p, line), 1e-9 * (1 + p.norm())) << p.transpose();
+  }
+  for (double cell : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    EXPECT_THROW(PolylineDistance(line, cell), std::invalid_argument) << cell;
+  }
 }
 
 // Arc lengths on a closed contour of length 10: the shorter way round, across 0 = L as well.

@@ -2,7 +2,6 @@
 // Polylines of diffusion curves, for the distance field, the amplitude measurement and the
 // intersection checks.
 
-#include <unordered_map>
 #include <vector>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
@@ -18,8 +17,10 @@ Polyline sampleCurve(const DiffusionCurve& curve, int per_segment = 16);
 /// Euclidean distance from `point` to the nearest point of `line` (+inf for an empty line).
 double distanceToPolyline(const Point2& point, const Polyline& line);
 
-/// distanceToPolyline for many points against one polyline: its segments in grid buckets, each
-/// query searching rings of cells outward until no nearer segment can be left.
+/// distanceToPolyline for many points against one polyline: its segments in grid cells of
+/// `cell` pixels (coarser when that would take over 4 M cells), each query searching rings of
+/// cells outward until no nearer segment can be left. Throws std::invalid_argument for a cell
+/// that is not a finite number > 0. `line` must outlive it.
 class PolylineDistance {
  public:
   explicit PolylineDistance(const Polyline& line, double cell = 4.0);
@@ -30,11 +31,16 @@ class PolylineDistance {
 
  private:
   int nearestSegment(const Point2& point) const;  ///< -1 when there is none
+  /// Every segment tried: for a query too far away for cell indices.
+  int nearestSegmentScanned(const Point2& point) const;
 
+  static constexpr double kMaxCells = 1 << 22;
+  static constexpr double kFarCells = 1e15;
   const Polyline& line_;
   double cell_;
-  long long min_x_ = 0, min_y_ = 0, max_x_ = 0, max_y_ = 0;
-  std::unordered_map<long long, std::vector<int>> buckets_;  ///< cell -> segment indices
+  long long min_x_ = 0, min_y_ = 0, max_x_ = 0, max_y_ = 0;  ///< the cells the segments touch
+  std::vector<int> start_;     ///< per cell (row-major) its first entry in segments_, + end
+  std::vector<int> segments_;  ///< segment indices, cell by cell
 };
 
 /// Shoelace area of a closed polyline (positive: clockwise on screen, y down).
