@@ -90,6 +90,29 @@ TEST(OffsetContourTest, NonFiniteInputGivesNoIsoline) {
   EXPECT_TRUE(offsetIsoline(circle, -2.0).empty());
 }
 
+// A dumbbell (a large and a small disc joined by a neck 6 px wide) shrunk by 5 px falls apart:
+// the isoline is the large disc's part, every point at the offset from the contour.
+TEST(OffsetContourTest, AShrunkRegionThatSplitsKeepsItsLargestPart) {
+  Polyline dumbbell;
+  const auto arc = [&](const Point2& centre, double radius, double from, double to) {
+    for (int i = 0; i <= 200; ++i) {
+      const double angle = from + (to - from) * i / 200;
+      dumbbell.push_back(centre + radius * Point2(std::cos(angle), std::sin(angle)));
+    }
+  };
+  const double big = std::asin(3.0 / 40.0), small = std::asin(3.0 / 20.0);
+  arc({60, 100}, 40, big, 2 * M_PI - big);              // large disc, open to the right
+  arc({160, 100}, 20, M_PI + small, 3 * M_PI - small);  // small disc, open to the left
+  dumbbell.push_back(dumbbell.front());
+  const Polyline isoline = offsetIsoline(dumbbell, -5.0);
+  ASSERT_GT(isoline.size(), 100u);
+  for (const Point2& p : isoline) {
+    EXPECT_LT(p.x(), 100.0);  // nothing of the small disc or the neck
+    EXPECT_NEAR(distanceToPolyline(p, dumbbell), 5.0, 0.05);
+  }
+  EXPECT_NEAR(std::abs(polylineArea(isoline)), M_PI * 35 * 35, 0.01 * M_PI * 35 * 35);
+}
+
 // The raster is capped (2048 cells a side): a huge inflation stays cheap and still exact, as the
 // points are projected onto the isoline.
 TEST(OffsetContourTest, AHugeInflationIsExactOnACappedGrid) {
