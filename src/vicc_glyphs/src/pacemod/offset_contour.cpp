@@ -283,15 +283,13 @@ Polyline projectOntoIsoline(const Polyline& points, const Polyline& contour, dou
 
 Polyline offsetIsoline(const Polyline& contour, double offset) {
   if (contour.size() < 4 || !std::isfinite(offset) || !allFinite(contour)) return {};
-  if (offset == 0.0) {  // the contour itself, corners and all
-    Polyline closed = contour;
-    if (closed.front() != closed.back()) closed.push_back(closed.front());
-    return orientedLike(resampled(closed), contour);
-  }
-  const IsolineGrid grid = gridAround(contour, std::max(offset, 0.0) + 3.0);
-  const Polyline traced = traceLargest(offsetRegionRaster(contour, grid, offset), grid);
+  Polyline closed = contour;  // the raster closes it; the projection must see the same polygon
+  if (closed.front() != closed.back()) closed.push_back(closed.front());
+  if (offset == 0.0) return orientedLike(resampled(closed), closed);  // corners and all
+  const IsolineGrid grid = gridAround(closed, std::max(offset, 0.0) + 3.0);
+  const Polyline traced = traceLargest(offsetRegionRaster(closed, grid, offset), grid);
   if (traced.empty()) return {};
-  return orientedLike(projectOntoIsoline(traced, contour, offset), contour);
+  return orientedLike(projectOntoIsoline(traced, closed, offset), closed);
 }
 
 Polyline offsetIsolineAvoiding(const Polyline& contour, double offset,
@@ -313,7 +311,7 @@ Polyline offsetIsolineAvoiding(const Polyline& contour, double offset,
     clipper.AddPaths(offsetRegion(blocked, std::max(clearance, 0.0)), ClipperLib::ptClip, true);
     clipper.Execute(ClipperLib::ctDifference, region, ClipperLib::pftNonZero,
                     ClipperLib::pftNonZero);
-    if (limited) *limited = totalArea(region) < before - 1.0;  // 1/1024 px^2: anything at all
+    if (limited) *limited = totalArea(region) < before - 1.0;  // one unit^2: anything at all
   }
   return orientedLike(largestAsPolyline(region), contour);
 }

@@ -83,6 +83,15 @@ TEST(OffsetContourTest, AnObstacleLimitsTheInflatedRegion) {
   for (const Point2& p : free) EXPECT_NEAR(distanceToPolyline(p, square), 6.0, 0.02);
 }
 
+// A contour given without its closing point is taken as closed, as the region it bounds.
+TEST(OffsetContourTest, AnOpenPolylineIsClosed) {
+  const Polyline open_square = {{0, 0}, {40, 0}, {40, 40}, {0, 40}};
+  const Polyline closed_square = {{0, 0}, {40, 0}, {40, 40}, {0, 40}, {0, 0}};
+  const Polyline isoline = offsetIsoline(open_square, -4.0);
+  ASSERT_GT(isoline.size(), 100u);
+  for (const Point2& p : isoline) EXPECT_NEAR(distanceToPolyline(p, closed_square), 4.0, 0.05);
+}
+
 TEST(OffsetContourTest, NonFiniteInputGivesNoIsoline) {
   Polyline circle = circlePolygon(40, true);
   EXPECT_TRUE(offsetIsoline(circle, std::nan("")).empty());
