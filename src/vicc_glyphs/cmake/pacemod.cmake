@@ -1,6 +1,6 @@
 # PACEMOD (thesis 6.2.3-6.2.4): periodic contour modifications of diffusion curve icons.
-# ROS-free: the DCI, the B-spline toolkit, OpenCV (distance transform) and Clipper (isolines). Included after
-# cli.cmake, as it adds the `modify` subcommand to vicc_glyph.
+# ROS-free: the DCI, the B-spline toolkit, OpenCV (distance transform) and Clipper (isolines).
+# Included after cli.cmake, as it adds the `modify` subcommand to vicc_glyph.
 if(NOT TARGET vicc_glyphs_bspline)
   message(STATUS "vicc_glyphs: PACEMOD needs the B-spline toolkit; not built")
   return()
