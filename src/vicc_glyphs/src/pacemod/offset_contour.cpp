@@ -283,8 +283,14 @@ Polyline projectOntoIsoline(const Polyline& points, const Polyline& contour, dou
 
 Polyline offsetIsoline(const Polyline& contour, double offset) {
   if (contour.size() < 4 || !std::isfinite(offset) || !allFinite(contour)) return {};
-  Polyline closed = contour;  // the raster closes it; the projection must see the same polygon
+  // Without repeated points (a segment of length 0 has no side to project to), and closed: the
+  // raster closes it, and the projection must see the same polygon.
+  Polyline closed;
+  for (const Point2& p : contour) {
+    if (closed.empty() || p != closed.back()) closed.push_back(p);
+  }
   if (closed.front() != closed.back()) closed.push_back(closed.front());
+  if (closed.size() < 4) return {};
   if (offset == 0.0) return orientedLike(resampled(closed), closed);  // corners and all
   const IsolineGrid grid = gridAround(closed, std::max(offset, 0.0) + 3.0);
   const Polyline traced = traceLargest(offsetRegionRaster(closed, grid, offset), grid);

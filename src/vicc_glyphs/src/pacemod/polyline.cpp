@@ -34,10 +34,13 @@ double distanceToPolyline(const Point2& point, const Polyline& line) {
 
 namespace {
 
+// The ends exactly (a + 1 * (b - a) may miss b by a rounding): callers tell a vertex by them.
 Point2 nearestOnSegment(const Point2& point, const Point2& a, const Point2& b) {
   const Point2 d = b - a;
   const double length2 = d.squaredNorm();
-  const double t = length2 > 0.0 ? std::clamp((point - a).dot(d) / length2, 0.0, 1.0) : 0.0;
+  const double t = length2 > 0.0 ? (point - a).dot(d) / length2 : 0.0;
+  if (!(t > 0.0)) return a;
+  if (t >= 1.0) return b;
   return a + t * d;
 }
 

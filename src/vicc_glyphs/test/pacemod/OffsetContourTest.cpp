@@ -92,6 +92,28 @@ TEST(OffsetContourTest, AnOpenPolylineIsClosed) {
   for (const Point2& p : isoline) EXPECT_NEAR(distanceToPolyline(p, closed_square), 4.0, 0.05);
 }
 
+// Repeated points (a degenerate Bezier segment samples one point many times) change nothing,
+// nor do corners whose coordinates do not round-trip through a + (b - a): inflated, a square's
+// corners are arcs around its vertices, inset they are corners.
+TEST(OffsetContourTest, RepeatedPointsAndInexactVerticesChangeNothing) {
+  Polyline square, plain;
+  for (int i = 0; i < 4; ++i) {
+    const double angle = 0.3 + i * M_PI / 2;
+    const Point2 corner = Point2(50.123, 50.456) + 28.37 * Point2(std::cos(angle), std::sin(angle));
+    plain.push_back(corner);
+    for (int k = 0; k < 3; ++k) square.push_back(corner);
+  }
+  square.push_back(square.front());
+  plain.push_back(plain.front());
+  for (const Polyline& contour : {plain, square}) {
+    for (double offset : {3.0, -3.0}) {
+      const Polyline isoline = offsetIsoline(contour, offset);
+      ASSERT_GT(isoline.size(), 100u);
+      for (const Point2& p : isoline) EXPECT_NEAR(distanceToPolyline(p, plain), 3.0, 0.05);
+    }
+  }
+}
+
 TEST(OffsetContourTest, NonFiniteInputGivesNoIsoline) {
   Polyline circle = circlePolygon(40, true);
   EXPECT_TRUE(offsetIsoline(circle, std::nan("")).empty());

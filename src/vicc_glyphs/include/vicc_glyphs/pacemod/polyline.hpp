@@ -25,8 +25,8 @@ class PolylineDistance {
  public:
   explicit PolylineDistance(const Polyline& line, double cell = 4.0);
   double operator()(const Point2& point) const;
-  /// The nearest point of the polyline (NaN for an empty line or a non-finite query) and, if
-  /// asked, the index of the segment it lies on (-1 for none).
+  /// The nearest point of the polyline (NaN for an empty line or a non-finite query; a vertex
+  /// exactly when it is one) and, if asked, the index of the segment it lies on (-1 for none).
   Point2 nearest(const Point2& point, int* segment = nullptr) const;
 
  private:
