@@ -183,14 +183,20 @@ Polyline traceLargest(const cv::Mat& region, const IsolineGrid& grid) {
   return result;
 }
 
-// Whether `away` (from the nearest point of `contour`, on `segment`) points to the side
-// `outward_is_right` says (+1: right of the direction of travel, -1: left). At a vertex, either
-// segment meeting there will do: a point beyond a segment's end is beside its neighbour.
+// The normal (unnormalised) of `contour`'s segment towards the offset's side, which
+// `outward_is_right` gives (+1: right of the direction of travel, -1: left).
+Point2 offsetSideNormal(const Polyline& contour, int segment, double outward_is_right) {
+  const Point2 along = contour[segment + 1] - contour[segment];
+  return outward_is_right * Point2(-along.y(), along.x());
+}
+
+// Whether `away` (from the nearest point of `contour`, on `segment`) points to the offset's
+// side. At a vertex, either segment meeting there will do: a point beyond a segment's end is
+// beside its neighbour.
 bool onOffsetSide(const Polyline& contour, int segment, const Point2& foot, const Point2& away,
                   double outward_is_right) {
   const auto side = [&](int i) {
-    const Point2 along = contour[i + 1] - contour[i];
-    return away.dot(outward_is_right * Point2(-along.y(), along.x())) > 0.0;
+    return away.dot(offsetSideNormal(contour, i, outward_is_right)) > 0.0;
   };
   if (side(segment)) return true;
   const int last = static_cast<int>(contour.size()) - 2;  // closed: last segment meets the first
@@ -221,8 +227,7 @@ class IsolineProjection {
       if (segment < 0) break;
       Point2 away = p - nearest;
       if (!onOffsetSide(contour_, segment, nearest, away, outward_is_right_)) {
-        const Point2 along = contour_[segment + 1] - contour_[segment];
-        away = outward_is_right_ * Point2(-along.y(), along.x());
+        away = offsetSideNormal(contour_, segment, outward_is_right_);
       }
       if (!(away.norm() > 0.0)) break;
       const Point2 next = nearest + away.normalized() * distance_;
