@@ -29,6 +29,11 @@ constexpr double kSpacingPx = 0.25;
 constexpr int kProjectionSteps = 4;
 // A chord between two projected points whose middle is this far off the isoline cuts a corner.
 constexpr double kCornerCutPx = 0.005;
+// Between two projected points the isoline may bend away from their chord by this much before
+// a point goes in between (a raster of 2 px cells leaves chords of 2 px: on an arc of radius
+// 10 px they are 0.05 px off).
+constexpr double kSagittaPx = 0.01;
+constexpr int kBendRefinements = 4;
 
 using ClipperLib::Path;
 using ClipperLib::Paths;
@@ -136,7 +141,7 @@ IsolineGrid gridAround(const Polyline& contour, double margin) {
   low -= Point2::Constant(margin);
   high += Point2::Constant(margin);
   const double extent = std::max(high.x() - low.x(), high.y() - low.y());
-  const double scale = std::min(std::clamp(kGridCells / std::max(extent, 1e-9), 1.0, 4.0),
+  const double scale = std::min(std::clamp(kGridCells / std::max(extent, 1e-9), 0.5, 4.0),
                                 kMaxGridCells / std::max(extent, 1e-9));
   return {low, scale,
           cv::Size(static_cast<int>(std::ceil((high.x() - low.x()) * scale)) + 1,
@@ -243,7 +248,7 @@ class IsolineProjection {
   /// between them cuts one (their feet jump along the contour, and the chord's middle is off
   /// the isoline): the meeting point of the isoline's tangents there, projected.
   std::optional<Point2> cornerBetween(const Point2& a, const Point2& foot_a, const Point2& b,
-                                      const Point2& foot_b) const {
+                                      const Point2& foot_b, Point2* foot) const {
     if ((foot_a - foot_b).norm() <= 2.0 * (a - b).norm() + 1e-9) return std::nullopt;
     if (std::abs(nearest_(0.5 * (a + b)) - distance_) < kCornerCutPx) return std::nullopt;
     const Point2 normal_a = (a - foot_a).normalized(), normal_b = (b - foot_b).normalized();
@@ -254,34 +259,62 @@ class IsolineProjection {
     const Point2 corner((ca * normal_b.y() - cb * normal_a.y()) / determinant,
                         (normal_a.x() * cb - normal_b.x() * ca) / determinant);
     if ((corner - 0.5 * (a + b)).norm() > (a - b).norm()) return std::nullopt;
-    return project(corner);
+    return project(corner, foot);
+  }
+
+  /// Appends what the isoline needs from `a` to `b` (both on it, feet `foot_a` and `foot_b`):
+  /// the corner between them if there is one, and where the isoline bends away from a chord by
+  /// more than kSagittaPx (an arc that turns by t over a chord c: about c t / 8), the chord's
+  /// projected middle (at most kBendRefinements times over); then `b`. Around a corner the
+  /// corner's foot lies on one of the two branches: the other side gets a few points more.
+  void appendPiece(const Point2& a, const Point2& foot_a, const Point2& b, const Point2& foot_b,
+                   Polyline& line, int refinements = kBendRefinements) const {
+    Point2 corner_foot;
+    if (auto corner = cornerBetween(a, foot_a, b, foot_b, &corner_foot)) {
+      appendBend(a, foot_a, *corner, corner_foot, line, refinements);
+      appendBend(*corner, corner_foot, b, foot_b, line, refinements);
+      return;
+    }
+    appendBend(a, foot_a, b, foot_b, line, refinements);
   }
 
  private:
+  void appendBend(const Point2& a, const Point2& foot_a, const Point2& b, const Point2& foot_b,
+                  Polyline& line, int refinements) const {
+    const Point2 normal_a = a - foot_a, normal_b = b - foot_b;
+    const double turn =
+        std::abs(std::atan2(normal_a.x() * normal_b.y() - normal_a.y() * normal_b.x(),
+                            normal_a.dot(normal_b)));
+    if (refinements > 0 && (a - b).norm() * turn / 8.0 > kSagittaPx) {
+      Point2 foot;
+      const Point2 middle = project(0.5 * (a + b), &foot);
+      appendPiece(a, foot_a, middle, foot, line, refinements - 1);
+      appendPiece(middle, foot, b, foot_b, line, refinements - 1);
+      return;
+    }
+    line.push_back(b);
+  }
+
   const Polyline& contour_;
   double distance_;
   PolylineDistance nearest_;
   double outward_is_right_;
 };
 
-// The raster's isoline points on the exact isoline, with the corners the raster's steps cut,
-// resampled to at most kSpacingPx apart.
+// The raster's isoline points on the exact isoline, with the corners the raster's steps cut and
+// the points its bends need, resampled to at most kSpacingPx apart.
 Polyline projectOntoIsoline(const Polyline& points, const Polyline& contour, double offset) {
   const IsolineProjection projection(contour, offset);
   Polyline projected, feet(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     projected.push_back(projection.project(points[i], &feet[i]));
   }
-  Polyline cornered;
+  Polyline isoline{projected.front()};
   for (std::size_t i = 0; i < projected.size(); ++i) {
-    cornered.push_back(projected[i]);
     const std::size_t j = (i + 1) % projected.size();
-    if (auto corner = projection.cornerBetween(projected[i], feet[i], projected[j], feet[j])) {
-      cornered.push_back(*corner);
-    }
+    projection.appendPiece(projected[i], feet[i], projected[j], feet[j], isoline);
   }
-  cornered.push_back(cornered.front());
-  return resampled(cornered);
+  return resampled(isoline);
 }
 
 }  // namespace

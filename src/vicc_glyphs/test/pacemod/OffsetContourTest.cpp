@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "vicc_glyphs/pacemod/offset_contour.hpp"
 
@@ -39,9 +40,16 @@ TEST(OffsetContourTest, IsolinesOfACircleAreConcentricCirclesWithTheSameOrientat
   }
 }
 
+Polyline scaled(Polyline line, double factor) {
+  for (Point2& p : line) p *= factor;
+  return line;
+}
+
 // A five-lobed flower (smooth, with tight concave bends) and a cross (convex and reflex
 // corners): every point of an isoline lies at the offset from the contour, whether the isoline
-// has corners (a cross shrunk, the flower inflated past its bends' radii) or arcs.
+// has corners (a cross shrunk, the flower inflated past its bends' radii) or arcs. At 4x the
+// size the raster's cells are 2 px: its points are 2 px apart, and the 2 px arcs around the
+// cross's corners need points in between.
 TEST(OffsetContourTest, IsolinePointsLieAtTheOffsetFromTheContour) {
   Polyline flower;
   for (int i = 0; i <= 1000; ++i) {
@@ -52,7 +60,10 @@ TEST(OffsetContourTest, IsolinePointsLieAtTheOffsetFromTheContour) {
   const Polyline cross = {{100, 50},  {140, 50},  {140, 100}, {190, 100}, {190, 140},
                           {140, 140}, {140, 190}, {100, 190}, {100, 140}, {50, 140},
                           {50, 100},  {100, 100}, {100, 50}};
-  for (const Polyline& contour : {flower, cross}) {
+  const std::vector<Polyline> contours{flower, cross, scaled(flower, 4.0), scaled(cross, 4.0)};
+  for (std::size_t c = 0; c < contours.size(); ++c) {
+    SCOPED_TRACE("contour " + std::to_string(c));
+    const Polyline& contour = contours[c];
     for (double offset : {-12.0, -3.0, 0.0, 2.0, 8.0}) {
       const Polyline isoline = offsetIsoline(contour, offset);
       ASSERT_GT(isoline.size(), 100u) << offset;
