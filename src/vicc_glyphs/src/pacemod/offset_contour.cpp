@@ -282,9 +282,8 @@ class IsolineProjection {
   void appendBend(const Point2& a, const Point2& foot_a, const Point2& b, const Point2& foot_b,
                   Polyline& line, int refinements) const {
     const Point2 normal_a = a - foot_a, normal_b = b - foot_b;
-    const double turn =
-        std::abs(std::atan2(normal_a.x() * normal_b.y() - normal_a.y() * normal_b.x(),
-                            normal_a.dot(normal_b)));
+    const double turn = std::abs(std::atan2(
+        normal_a.x() * normal_b.y() - normal_a.y() * normal_b.x(), normal_a.dot(normal_b)));
     if (refinements > 0 && (a - b).norm() * turn / 8.0 > kSagittaPx) {
       Point2 foot;
       const Point2 middle = project(0.5 * (a + b), &foot);
