@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <new>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -63,6 +64,13 @@ struct PixelAllocator {
   template <class U, class... Args>
   void construct(U* p, Args&&... args) {
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+  /// Nothing to do: pixel buffers hold trivially destructible values. Without it the vector's
+  /// element-wise destruction compiled (GCC 12, -O3) to a memset of the whole buffer, 4 MB per
+  /// field of a 512 px solve when a renderer is destroyed.
+  template <class U>
+  void destroy(U*) noexcept {
+    static_assert(std::is_trivially_destructible_v<U>, "PixelAllocator: trivial types only");
   }
 
   template <class U>
