@@ -32,7 +32,7 @@ constexpr double kCornerCutPx = 0.005;
 // Between two projected points the isoline may bend away from their chord by this much before
 // a point goes in between (a raster of 2 px cells leaves chords of 2 px: on an arc of radius
 // 10 px they are 0.05 px off).
-constexpr double kSagittaPx = 0.01;
+constexpr double kSagittaPx = 0.02;
 constexpr int kBendRefinements = 4;
 
 using ClipperLib::Path;
