@@ -34,6 +34,7 @@ constexpr double kCornerCutPx = 0.005;
 // 10 px they are 0.05 px off).
 constexpr double kSagittaPx = 0.02;
 constexpr int kBendRefinements = 4;
+constexpr double kSamePointPx = 1e-9;
 
 using ClipperLib::Path;
 using ClipperLib::Paths;
@@ -291,7 +292,8 @@ class IsolineProjection {
       appendPiece(middle, foot, b, foot_b, line, refinements - 1);
       return;
     }
-    line.push_back(b);
+    // A corner found again between points next to it projects onto itself: no repeated point.
+    if (line.empty() || (b - line.back()).norm() > kSamePointPx) line.push_back(b);
   }
 
   const Polyline& contour_;

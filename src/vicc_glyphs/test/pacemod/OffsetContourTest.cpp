@@ -68,13 +68,16 @@ TEST(OffsetContourTest, IsolinePointsLieAtTheOffsetFromTheContour) {
       const Polyline isoline = offsetIsoline(contour, offset);
       ASSERT_GT(isoline.size(), 100u) << offset;
       EXPECT_LT((isoline.front() - isoline.back()).norm(), 1e-12);
-      double largest_gap = 0.0;
+      double largest_gap = 0.0, smallest_gap = 1e300;
       for (std::size_t i = 0; i < isoline.size(); ++i) {
         EXPECT_NEAR(distanceToPolyline(isoline[i], contour), std::abs(offset), 0.05)
             << "offset " << offset << " point " << i;
-        if (i > 0) largest_gap = std::max(largest_gap, (isoline[i] - isoline[i - 1]).norm());
+        if (i == 0) continue;
+        largest_gap = std::max(largest_gap, (isoline[i] - isoline[i - 1]).norm());
+        smallest_gap = std::min(smallest_gap, (isoline[i] - isoline[i - 1]).norm());
       }
       EXPECT_LE(largest_gap, 0.25 + 1e-9);
+      EXPECT_GT(smallest_gap, 1e-6);  // no repeated points (the fit's parameters would repeat)
     }
   }
 }
