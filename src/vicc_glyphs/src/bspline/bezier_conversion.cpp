@@ -32,8 +32,7 @@ Point2 blossom(const BSplineCurve& curve, int span, const std::array<double, kCu
 }
 
 double angleBetweenDegrees(const Point2& a, const Point2& b) {
-  const double cross = a.x() * b.y() - a.y() * b.x();
-  return std::atan2(std::abs(cross), a.dot(b)) * 180.0 / kPi;
+  return std::atan2(std::abs(cross(a, b)), a.dot(b)) * 180.0 / kPi;
 }
 
 // Tangents shorter than this fraction of the chain's extent count as retracted handles: their

@@ -24,7 +24,6 @@ constexpr int kFitSamples = 25;  // true-offset points per least-squares fit and
 constexpr double kMaxSampleTurn = 10.0 * kPi / 180.0;  // centreline polyline: turn per step
 constexpr double kCuspSpeed = 1e-6;  // |B'| below this x the control polygon's size: a cusp
 
-double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
 Point2 leftNormal(const Point2& v) { return Point2(-v.y(), v.x()); }
 Point2 rotated(const Point2& v, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);

@@ -8,9 +8,7 @@ namespace vicc_glyphs {
 namespace io_detail {
 namespace {
 
-double angleBetween(const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
-  return std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v));
-}
+double angleBetween(const Point2& u, const Point2& v) { return std::atan2(cross(u, v), u.dot(v)); }
 
 }  // namespace
 

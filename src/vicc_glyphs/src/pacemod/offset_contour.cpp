@@ -253,7 +253,7 @@ class IsolineProjection {
     if ((foot_a - foot_b).norm() <= 2.0 * (a - b).norm() + 1e-9) return std::nullopt;
     if (std::abs(nearest_(0.5 * (a + b)) - distance_) < kCornerCutPx) return std::nullopt;
     const Point2 normal_a = (a - foot_a).normalized(), normal_b = (b - foot_b).normalized();
-    const double determinant = normal_a.x() * normal_b.y() - normal_a.y() * normal_b.x();
+    const double determinant = cross(normal_a, normal_b);
     if (std::abs(determinant) < 1e-6) return std::nullopt;
     // x . normal_a = a . normal_a and x . normal_b = b . normal_b (Cramer's rule).
     const double ca = a.dot(normal_a), cb = b.dot(normal_b);
@@ -263,7 +263,8 @@ class IsolineProjection {
     return project(corner, foot);
   }
 
-  /// Appends what the isoline needs from `a` to `b` (both on it, feet `foot_a` and `foot_b`):
+  /// Appends what the isoline needs from `a` to `b` (both on it, feet `foot_a` and `foot_b`;
+  /// `line` ends at `a`):
   /// the corner between them if there is one, and where the isoline bends away from a chord by
   /// more than kSagittaPx (an arc that turns by t over a chord c: about c t / 8), the chord's
   /// projected middle (at most kBendRefinements times over); then `b`. Around a corner the
@@ -283,8 +284,7 @@ class IsolineProjection {
   void appendBend(const Point2& a, const Point2& foot_a, const Point2& b, const Point2& foot_b,
                   Polyline& line, int refinements) const {
     const Point2 normal_a = a - foot_a, normal_b = b - foot_b;
-    const double turn = std::abs(std::atan2(
-        normal_a.x() * normal_b.y() - normal_a.y() * normal_b.x(), normal_a.dot(normal_b)));
+    const double turn = std::abs(std::atan2(cross(normal_a, normal_b), normal_a.dot(normal_b)));
     if (refinements > 0 && (a - b).norm() * turn / 8.0 > kSagittaPx) {
       Point2 foot;
       const Point2 middle = project(0.5 * (a + b), &foot);
@@ -293,7 +293,7 @@ class IsolineProjection {
       return;
     }
     // A corner found again between points next to it projects onto itself: no repeated point.
-    if (line.empty() || (b - line.back()).norm() > kSamePointPx) line.push_back(b);
+    if ((b - line.back()).norm() > kSamePointPx) line.push_back(b);
   }
 
   const Polyline& contour_;

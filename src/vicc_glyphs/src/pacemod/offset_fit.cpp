@@ -161,8 +161,8 @@ Point2 OffsetFit::cornerPath(int c, int side, double distance, double spread, do
   // The side's normal turned by `angle` towards the bisector.
   const double angle = (along - spread) / std::abs(w_corner);
   const Point2 normal = side < 0 ? corner.normal_before : corner.normal_after;
-  const double cross = normal.x() * corner.bisector.y() - normal.y() * corner.bisector.x();
-  const double co = std::cos(angle), si = (cross >= 0.0 ? 1.0 : -1.0) * std::sin(angle);
+  const double direction = cross(normal, corner.bisector) >= 0.0 ? 1.0 : -1.0;
+  const double co = std::cos(angle), si = direction * std::sin(angle);
   return corner.point +
          w_corner * Point2(co * normal.x() - si * normal.y(), si * normal.x() + co * normal.y());
 }

@@ -11,8 +11,6 @@ namespace vicc_glyphs {
 namespace pacemod {
 namespace {
 
-double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // The intersection of the lines through a0 a1 and b0 b1 (not parallel).
 Point2 intersection(const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1) {
   const Point2 da = a1 - a0, db = b1 - b0;

@@ -73,12 +73,12 @@ std::vector<Point2> outerArc(const ContourCorner& corner, double w, int side) {
   std::vector<Point2> arc;
   if (corner.inside(w) || w == 0.0) return arc;
   const Point2 normal = side > 0 ? corner.normal_after : corner.normal_before;
-  const double cross = corner.bisector.x() * normal.y() - corner.bisector.y() * normal.x();
+  const double direction = cross(corner.bisector, normal) >= 0.0 ? 1.0 : -1.0;
   const double half_turn = std::acos(std::clamp(corner.half_turn_cosine, 0.0, 1.0));
   for (int k = 1; k < kArcSamples; ++k) {
     // From the bisector towards the side's normal (after), or back (before).
     const double t = side > 0 ? double(k) / kArcSamples : 1.0 - double(k) / kArcSamples;
-    const double angle = (cross >= 0.0 ? 1.0 : -1.0) * t * half_turn;
+    const double angle = direction * t * half_turn;
     const double c = std::cos(angle), s = std::sin(angle);
     const Point2 b = corner.bisector;
     arc.push_back(corner.point + w * Point2(c * b.x() - s * b.y(), s * b.x() + c * b.y()));

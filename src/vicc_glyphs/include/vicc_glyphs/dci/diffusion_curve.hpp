@@ -22,6 +22,10 @@ namespace vicc_glyphs {
 using Point2 = Eigen::Vector2d;
 using Color = Eigen::Vector3d;
 
+/// The z component of the 3-D cross product of `a` and `b`: the sine of the angle from a to b
+/// times both lengths (on screen, y down: positive when b points clockwise from a).
+inline double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
 /// A colour constraint at curve parameter `position` (in [0, K]).
 struct ColorPoint {
   double position = 0.0;
