@@ -1,5 +1,6 @@
 #include "vicc_glyphs/ros/glyph_server.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -66,15 +67,7 @@ GlyphServer::GlyphServer(ros::NodeHandle nh, ros::NodeHandle private_nh)
     throw std::runtime_error("parameter ~designs_dir: no design (.yaml) in " +
                              parameters_.designs_dir);
   }
-  // Each icon imported now at the design's size: a missing or broken icon stops the node with
-  // its name instead of failing every request, and the first glyph pays no import.
-  for (auto& [name, entry] : designs_) {
-    try {
-      icon(entry, 0);
-    } catch (const std::exception& e) {
-      throw std::runtime_error("design '" + name + "': " + e.what());
-    }
-  }
+  const double start_up_ms = renderOneGlyphPerDesign();
   // Checked before the image topics exist; their transports (e.g. compressed) keep their
   // parameters under ~<design>/image.
   std::vector<std::string> transport_namespaces;
@@ -91,7 +84,28 @@ GlyphServer::GlyphServer(ros::NodeHandle nh, ros::NodeHandle private_nh)
   }
   service_ = private_nh_.advertiseService("render", &GlyphServer::render, this);
   (void)nh;
-  ROS_INFO("glyph_server: %zu designs from %s", designs_.size(), parameters_.designs_dir.c_str());
+  ROS_INFO(
+      "glyph_server: %zu designs from %s (icons imported and one glyph each rendered in "
+      "%.0f ms)",
+      designs_.size(), parameters_.designs_dir.c_str(), start_up_ms);
+}
+
+// Each icon imported now at the design's size, and one glyph per design built and rendered
+// (every variable at its lowest level) into the cache: a missing or broken icon, or a design
+// whose glyph cannot be made (e.g. an encoding on a curve the icon does not have), stops the
+// node with the design's name instead of failing every request, and the first glyph pays no
+// import.
+double GlyphServer::renderOneGlyphPerDesign() {
+  const auto start = std::chrono::steady_clock::now();
+  for (auto& [name, entry] : designs_) {
+    try {
+      renderCached(entry, std::vector<int>(entry.design.variables.size(), 0), 0);
+    } catch (const std::exception& e) {
+      throw std::runtime_error("design '" + name + "': " + e.what());
+    }
+  }
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
 }
 
 void GlyphServer::onSubscribe(const std::string& design,

@@ -133,26 +133,16 @@ TEST(GlyphServerParameters, BadParametersAreNamed) {
             std::string::npos);
 }
 
-// A design whose icon cannot be imported stops the server at start, naming design and file
-// (it used to fail only when a glyph was requested).
-TEST(GlyphServerParameters, ADesignWithoutItsIconIsNamedAtStart) {
+namespace {
+
+// The message a server started on a directory holding only `name`.yaml (with `yaml` in it)
+// stops with ("" if it starts).
+std::string startUpError(const std::string& name, const std::string& yaml) {
   const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("glyph_server_icon_" + std::to_string(getpid()));
+      std::filesystem::temp_directory_path() / ("glyph_server_" + name + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
-  std::ofstream(dir / "lost_icon.yaml") << "name: lost_icon\n"
-                                           "icon: no_such_icon.svg\n"
-                                           "size_mm: 50\n"
-                                           "size_px: 64\n"
-                                           "variables:\n"
-                                           "  - name: value\n"
-                                           "    domain: [0, 1]\n"
-                                           "    edges: [0.5]\n"
-                                           "    encodings:\n"
-                                           "      - channel: fill_color\n"
-                                           "        curves: all\n"
-                                           "        replace: \"000000\"\n"
-                                           "        colors: [\"ff0000\", \"00ff00\"]\n";
-  ros::NodeHandle nh("~/lost_icon");
+  std::ofstream(dir / (name + ".yaml")) << yaml;
+  ros::NodeHandle nh("~/" + name);
   nh.setParam("designs_dir", dir.string());
   std::string message;
   try {
@@ -162,8 +152,71 @@ TEST(GlyphServerParameters, ADesignWithoutItsIconIsNamedAtStart) {
   }
   nh.deleteParam("designs_dir");
   std::filesystem::remove_all(dir);
+  return message;
+}
+
+// A one-variable colour design on `icon`, its colour on `curves`.
+std::string colourDesign(const std::string& name, const std::string& icon,
+                         const std::string& curves) {
+  return "name: " + name + "\nicon: " + icon +
+         "\nsize_mm: 50\n"
+         "size_px: 64\n"
+         "variables:\n"
+         "  - name: value\n"
+         "    domain: [0, 1]\n"
+         "    edges: [0.5]\n"
+         "    encodings:\n"
+         "      - channel: fill_color\n"
+         "        curves: \"" +
+         curves +
+         "\"\n"
+         "        replace: \"000000\"\n"
+         "        colors: [\"ff0000\", \"00ff00\"]\n";
+}
+
+}  // namespace
+
+// A design whose icon cannot be imported stops the server at start, naming design and file
+// (it used to fail only when a glyph was requested).
+TEST(GlyphServerParameters, ADesignWithoutItsIconIsNamedAtStart) {
+  const std::string message =
+      startUpError("lost_icon", colourDesign("lost_icon", "no_such_icon.svg", "all"));
   EXPECT_NE(message.find("design 'lost_icon'"), std::string::npos) << message;
   EXPECT_NE(message.find("no_such_icon.svg"), std::string::npos) << message;
+}
+
+// So does a design whose glyph cannot be made (it loads, but its encoding names a curve the
+// icon does not have): start-up builds and renders one glyph of each design.
+TEST(GlyphServerParameters, ADesignWhoseGlyphCannotBeMadeIsNamedAtStart) {
+  const std::string icon =
+      vicc_glyphs::ros_glyph::GlyphServerParameters::withDefaultPaths().designs_dir +
+      "/icons/head_brain.svg";
+  ASSERT_TRUE(std::filesystem::exists(icon)) << icon;
+  const std::string message = startUpError("no_curve_7", colourDesign("no_curve_7", icon, "7"));
+  EXPECT_NE(message.find("design 'no_curve_7'"), std::string::npos) << message;
+  EXPECT_NE(message.find("curve index 7 out of range"), std::string::npos) << message;
+  // The same design on a curve the icon has starts.
+  EXPECT_EQ(startUpError("curve_1", colourDesign("curve_1", icon, "1")), "");
+}
+
+// Start-up renders one glyph per design into the cache; a smaller cache keeps only the last ones.
+TEST(GlyphServerParameters, StartUpRendersOneGlyphPerDesignIntoTheCache) {
+  const auto defaults = vicc_glyphs::ros_glyph::GlyphServerParameters::withDefaultPaths();
+  std::size_t design_files = 0;
+  for (const auto& file : std::filesystem::directory_iterator(defaults.designs_dir)) {
+    design_files += file.path().extension() == ".yaml";
+  }
+  ASSERT_GE(design_files, 4u);
+  {
+    ros::NodeHandle nh("~/warm");
+    vicc_glyphs::ros_glyph::GlyphServer server(ros::NodeHandle(), nh);
+    EXPECT_EQ(server.cacheEntries(), design_files);
+  }
+  ros::NodeHandle small("~/warm_small_cache");
+  small.setParam("cache_size", 2);
+  vicc_glyphs::ros_glyph::GlyphServer server(ros::NodeHandle(), small);
+  small.deleteParam("cache_size");
+  EXPECT_EQ(server.cacheEntries(), 2u);
 }
 
 TEST(GlyphServerParameters, KeysLeftOutTakeThePackagesFilesAndTyposAreNamed) {

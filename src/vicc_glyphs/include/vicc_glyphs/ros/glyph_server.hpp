@@ -4,6 +4,9 @@
 // - Topics ~<design>/image (image_transport): every glyph rendered for that design is
 //   published there while someone subscribes (nothing is encoded otherwise); a new
 //   subscriber gets the latest one.
+// - At start-up every design's icon is imported and one glyph of each built and rendered (every
+//   variable at its lowest level) into the cache, so that a design that cannot be made stops
+//   the node with its name instead of failing every request.
 // Parameters (read once through vicc_common's table reader: a wrong type or an invalid value
 // stops start-up with a message naming it, an unknown key in ~ is warned about):
 //   ~designs_dir (string): directory of design YAML files (default: the package's designs/)
@@ -63,6 +66,7 @@ class GlyphServer {
   GlyphServer(ros::NodeHandle nh, ros::NodeHandle private_nh);
 
   bool render(vicc_msgs::RenderGlyph::Request& request, vicc_msgs::RenderGlyph::Response& response);
+  /// Glyphs in the cache (after start-up: one per design, unless ~cache_size is smaller).
   size_t cacheEntries() const { return cache_order_.size(); }
 
  private:
@@ -76,6 +80,9 @@ class GlyphServer {
   };
   using CacheKey = std::pair<std::string, std::vector<int>>;  // design, levels + size
 
+  /// Imports every design's icon and renders one glyph of each into the cache; returns the
+  /// milliseconds it took. Throws std::runtime_error naming the design.
+  double renderOneGlyphPerDesign();
   cv::Mat renderCached(DesignEntry& entry, const std::vector<int>& levels, int size);
   /// The entry's icon at `size` (imported on first use).
   const DiffusionCurveImage& icon(DesignEntry& entry, int size);
