@@ -9,6 +9,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -116,6 +118,35 @@ inline ChildRun runToEnd(const std::vector<std::string>& arguments, ros::WallDur
   return run;
 }
 
+/// roslaunch's own log of the process `roslaunch` in this run's log directory (ROS_LOG_DIR,
+/// else ROS_HOME/log, else ~/.ros/log; then the run id): each node's stop with its time, which
+/// tells what held up a slow stop. Without the line that lists the environment (not for test
+/// output); "" if it is not there.
+inline std::string roslaunchOwnLog(pid_t roslaunch) {
+  std::string run_id;
+  if (!ros::param::get("/run_id", run_id)) return "";
+  std::filesystem::path dir;
+  if (const char* log_dir = std::getenv("ROS_LOG_DIR")) {
+    dir = log_dir;
+  } else if (const char* ros_home = std::getenv("ROS_HOME")) {
+    dir = std::filesystem::path(ros_home) / "log";
+  } else if (const char* home = std::getenv("HOME")) {
+    dir = std::filesystem::path(home) / ".ros" / "log";
+  } else {
+    return "";
+  }
+  char host[256] = {};
+  gethostname(host, sizeof(host) - 1);
+  const std::string name =
+      "roslaunch-" + std::string(host) + "-" + std::to_string(roslaunch) + ".log";
+  std::ifstream file(dir / run_id / name);
+  std::string text, line;
+  while (std::getline(file, line)) {
+    if (line.find("roslaunch env is") == std::string::npos) text += line + "\n";
+  }
+  return text;
+}
+
 /// Ctrl-C to a running roslaunch, and the checks of a clean stop: it ends within `limit` with
 /// exit code 0, and no node had to be escalated to SIGTERM (roslaunch waits 15 s per node
 /// before it does) or died. `output_file` holds what roslaunch printed.
@@ -125,7 +156,8 @@ inline void expectCleanSigintStop(pid_t roslaunch, const std::string& output_fil
   const bool ended = interruptChild(roslaunch, limit, wait_status);
   const std::string printed = readTextFile(output_file);
   EXPECT_TRUE(ended) << "roslaunch did not end within " << limit.toSec() << " s of SIGINT:\n"
-                     << printed;
+                     << printed << "\nroslaunch's own log:\n"
+                     << roslaunchOwnLog(roslaunch);
   EXPECT_TRUE(WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0)
       << "wait status " << wait_status << "\n"
       << printed;
