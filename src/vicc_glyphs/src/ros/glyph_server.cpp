@@ -93,8 +93,8 @@ GlyphServer::GlyphServer(ros::NodeHandle nh, ros::NodeHandle private_nh)
 // Each icon imported now at the design's size, and one glyph per design built and rendered
 // (every variable at its lowest level) into the cache: a missing or broken icon, or a design
 // whose glyph cannot be made (e.g. an encoding on a curve the icon does not have), stops the
-// node with the design's name instead of failing every request, and the first glyph pays no
-// import.
+// node with the design's name instead of failing every request, and no request pays the
+// import at the design's size.
 double GlyphServer::renderOneGlyphPerDesign() {
   const auto start = std::chrono::steady_clock::now();
   for (auto& [name, entry] : designs_) {

@@ -208,11 +208,11 @@ TEST(GlyphServerParameters, StartUpRendersOneGlyphPerDesignIntoTheCache) {
   }
   ASSERT_GE(design_files, 4u);
   {
-    ros::NodeHandle nh("~/warm");
+    ros::NodeHandle nh("~/start_up");
     vicc_glyphs::ros_glyph::GlyphServer server(ros::NodeHandle(), nh);
     EXPECT_EQ(server.cacheEntries(), design_files);
   }
-  ros::NodeHandle small("~/warm_small_cache");
+  ros::NodeHandle small("~/start_up_small_cache");
   small.setParam("cache_size", 2);
   vicc_glyphs::ros_glyph::GlyphServer server(ros::NodeHandle(), small);
   small.deleteParam("cache_size");
