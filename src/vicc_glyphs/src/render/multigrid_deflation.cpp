@@ -16,15 +16,22 @@ void DeflationSpace::build(const FineLevel& fine) {
 // Interior: linked to four free pixels, so not next to a curve, a Dirichlet pixel or the image
 // border. A neck of one or two pixels between two regions has no interior pixel.
 void DeflationSpace::markInterior(const FineLevel& fine) {
-  interior_.assign(fine.size, 0);
-  const std::uint8_t* mask = fine.mask.data();
+  interior_.resize(fine.size);
+  const std::uint8_t* __restrict mask = fine.mask.data();
+  std::uint8_t* __restrict interior = interior_.data();
   const int s = fine.stride;
+  // Every entry is written (the ghost border's 0) and the row loop has no branch, so that it
+  // vectorises.
+  std::fill_n(interior, fine.index(0, 0), std::uint8_t{0});
   for (int y = 0; y < fine.height; ++y) {
-    for (int p = fine.index(0, y), end = fine.index(fine.width, y); p < end; ++p) {
+    const int begin = fine.index(0, y), end = fine.index(fine.width, y);
+    for (int p = begin; p < end; ++p) {
       const std::uint8_t around = mask[p - 1] | mask[p + 1] | mask[p - s] | mask[p + s];
-      interior_[p] = mask[p] == kAllLinks && !(around & kFixed);
+      interior[p] = (mask[p] == kAllLinks) & !(around & kFixed);
     }
+    interior[end] = interior[end + 1] = 0;  // right border, left border of the next row
   }
+  std::fill(interior + fine.index(0, fine.height) - 1, interior + fine.size, std::uint8_t{0});
 }
 
 // Union-find within each kTileSize square: interior pixels join their interior neighbours
@@ -37,18 +44,26 @@ void DeflationSpace::joinPieces(const FineLevel& fine) {
   const std::uint8_t* mask = fine.mask.data();
   const std::uint8_t* interior = interior_.data();
   const int s = fine.stride;
+  // Per column: whether the pixel there in the row above joined its left neighbour.
+  left_joined_.assign(static_cast<size_t>(fine.width), 0);
   for (int y = 0; y < fine.height; ++y) {
     const bool up_inside = y % kTileSize != 0;
+    bool left_joined_up = false;  // whether the left neighbour joined the pixel above it
     for (int x = 0; x < fine.width; ++x) {
       const int p = fine.index(x, y);
-      const bool left_inside = x % kTileSize != 0;
-      if (!interior[p]) continue;
-      // Not through a hole in a wall of cut links: the links beside this one must be there.
-      // p is still its own root: hang it below its left neighbour's parent (short chains).
-      if (left_inside && interior[p - 1] && (mask[p - s] & mask[p + s] & kLeft)) {
-        parent_[p] = parent_[p - 1];
+      bool joins_left = false, joins_up = false;
+      if (interior[p]) {
+        // Not through a hole in a wall of cut links: the links beside this one must be there.
+        // p is still its own root: hang it below its left neighbour's parent (short chains).
+        joins_left = x % kTileSize != 0 && interior[p - 1] && (mask[p - s] & mask[p + s] & kLeft);
+        if (joins_left) parent_[p] = parent_[p - 1];
+        joins_up = up_inside && interior[p - s] && (mask[p - 1] & mask[p + 1] & kUp);
+        // p and p - s are one set already when p joined its left neighbour, that one the pixel
+        // above it, and that one p - s (most pixels of a large piece): no finds then.
+        if (joins_up && !(joins_left && left_joined_up && left_joined_[x])) unite(p, p - s);
       }
-      if (up_inside && interior[p - s] && (mask[p - 1] & mask[p + 1] & kUp)) unite(p, p - s);
+      left_joined_[x] = joins_left;
+      left_joined_up = joins_up;
     }
   }
   for (int y = 0; y < fine.height; ++y) {

@@ -65,6 +65,7 @@ class DeflationSpace {
   int count_ = 0;
   std::vector<std::uint8_t> interior_;
   std::vector<int> parent_;
+  std::vector<std::uint8_t> left_joined_;  // joinPieces' row above
   std::vector<double> diagonal_;
   std::vector<std::uint32_t> labels_;
   std::vector<int> boundary_;
