@@ -5,9 +5,9 @@
 
 namespace vicc_glyphs::multigrid_detail {
 
-void DeflationSpace::build(const FineLevel& fine) {
+void DeflationSpace::build(const FineLevel& fine, const std::vector<int>& singletons) {
   count_ = 0;
-  markInterior(fine);
+  markInterior(fine, singletons);
   joinPieces(fine);
   compactLabels(fine);
   factorise(fine);
@@ -15,7 +15,7 @@ void DeflationSpace::build(const FineLevel& fine) {
 
 // Interior: linked to four free pixels, so not next to a curve, a Dirichlet pixel or the image
 // border. A neck of one or two pixels between two regions has no interior pixel.
-void DeflationSpace::markInterior(const FineLevel& fine) {
+void DeflationSpace::markInterior(const FineLevel& fine, const std::vector<int>& singletons) {
   interior_.resize(fine.size);
   const std::uint8_t* __restrict mask = fine.mask.data();
   std::uint8_t* __restrict interior = interior_.data();
@@ -27,11 +27,12 @@ void DeflationSpace::markInterior(const FineLevel& fine) {
     const int begin = fine.index(0, y), end = fine.index(fine.width, y);
     for (int p = begin; p < end; ++p) {
       const std::uint8_t around = mask[p - 1] | mask[p + 1] | mask[p - s] | mask[p + s];
-      interior[p] = (mask[p] == kAllLinks) & !(around & kFixed);
+      interior[p] = (mask[p] == kAllLinks) & !(around & kFixed);  // kInterior or 0
     }
     interior[end] = interior[end + 1] = 0;  // right border, left border of the next row
   }
   std::fill(interior + fine.index(0, fine.height) - 1, interior + fine.size, std::uint8_t{0});
+  for (const int p : singletons) interior[p] = kSingleton;
 }
 
 // Union-find within each kTileSize square: interior pixels join their interior neighbours
@@ -52,12 +53,13 @@ void DeflationSpace::joinPieces(const FineLevel& fine) {
     for (int x = 0; x < fine.width; ++x) {
       const int p = fine.index(x, y);
       bool joins_left = false, joins_up = false;
-      if (interior[p]) {
+      if (interior[p] == kInterior) {
         // Not through a hole in a wall of cut links: the links beside this one must be there.
         // p is still its own root: hang it below its left neighbour's parent (short chains).
-        joins_left = x % kTileSize != 0 && interior[p - 1] && (mask[p - s] & mask[p + s] & kLeft);
+        joins_left = x % kTileSize != 0 && interior[p - 1] == kInterior &&
+                     (mask[p - s] & mask[p + s] & kLeft);
         if (joins_left) parent_[p] = parent_[p - 1];
-        joins_up = up_inside && interior[p - s] && (mask[p - 1] & mask[p + 1] & kUp);
+        joins_up = up_inside && interior[p - s] == kInterior && (mask[p - 1] & mask[p + 1] & kUp);
         // p and p - s are one set already when p joined its left neighbour, that one the pixel
         // above it, and that one p - s (most pixels of a large piece): no finds then.
         if (joins_up && !(joins_left && left_joined_up && left_joined_[x])) unite(p, p - s);
@@ -70,14 +72,14 @@ void DeflationSpace::joinPieces(const FineLevel& fine) {
     for (int x = 0; x < fine.width; ++x) {
       const int p = fine.index(x, y);
       const std::uint8_t m = mask[p];
-      if ((m & kFixed) || interior[p]) continue;
+      if ((m & kFixed) || interior[p]) continue;  // interior, or a singleton
       const bool inside[4] = {x % kTileSize != 0, (x + 1) % kTileSize != 0 && x + 1 < fine.width,
                               y % kTileSize != 0, (y + 1) % kTileSize != 0 && y + 1 < fine.height};
       const std::uint8_t links[4] = {kLeft, kRight, kUp, kDown};
       const int offsets[4] = {-1, 1, -s, s};
       bool joined = false;
       for (int k = 0; k < 4 && !joined; ++k) {
-        if (inside[k] && (m & links[k]) && interior[p + offsets[k]]) {
+        if (inside[k] && (m & links[k]) && interior[p + offsets[k]] == kInterior) {
           parent_[p] = find(p + offsets[k]);
           joined = true;
         }
@@ -99,10 +101,10 @@ bool DeflationSpace::hasInteriorLink(const FineLevel& fine, int q) const {
   const int x = q % fine.stride - 1, y = q / fine.stride - 1;
   const std::uint8_t m = fine.mask[q];
   const int s = fine.stride;
-  return (x % kTileSize != 0 && (m & kLeft) && interior_[q - 1]) ||
-         ((x + 1) % kTileSize != 0 && (m & kRight) && interior_[q + 1]) ||
-         (y % kTileSize != 0 && (m & kUp) && interior_[q - s]) ||
-         ((y + 1) % kTileSize != 0 && (m & kDown) && interior_[q + s]);
+  return (x % kTileSize != 0 && (m & kLeft) && interior_[q - 1] == kInterior) ||
+         ((x + 1) % kTileSize != 0 && (m & kRight) && interior_[q + 1] == kInterior) ||
+         (y % kTileSize != 0 && (m & kUp) && interior_[q - s] == kInterior) ||
+         ((y + 1) % kTileSize != 0 && (m & kDown) && interior_[q + s] == kInterior);
 }
 
 // Numbers the pieces 0..count_-1 in scan order of the first pixel met; count_ at everything

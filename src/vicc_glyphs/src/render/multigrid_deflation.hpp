@@ -25,7 +25,8 @@ namespace vicc_glyphs::multigrid_detail {
 class DeflationSpace {
  public:
   /// Labels the pieces of `fine` and factorises E (reusing the memory of the last build).
-  void build(const FineLevel& fine);
+  /// Each free pixel listed in `singletons` (fine indices) is a piece of its own.
+  void build(const FineLevel& fine, const std::vector<int>& singletons = {});
 
   /// Regions (columns of Z); 0 when there is nothing to deflate.
   int count() const { return count_; }
@@ -44,8 +45,10 @@ class DeflationSpace {
  private:
   // Side of the squares the regions are split into (see splitIntoTiles).
   static constexpr int kTileSize = 128;
+  // interior_: kInterior, kSingleton (a piece of its own, joins nothing) or 0.
+  static constexpr std::uint8_t kInterior = 1, kSingleton = 2;
 
-  void markInterior(const FineLevel& fine);
+  void markInterior(const FineLevel& fine, const std::vector<int>& singletons);
   void joinPieces(const FineLevel& fine);
   bool hasInteriorLink(const FineLevel& fine, int q) const;
   void compactLabels(const FineLevel& fine);

@@ -68,14 +68,56 @@ TEST(DeflationSpaceTest, APocketBehindAOnePixelNeckIsAPieceOfItsOwn) {
   EXPECT_EQ(labels[0], static_cast<std::uint32_t>(space.count()));
 }
 
-// E = Z^T A Z, and E^-1 applied through solve(), against dense products over all free pixels.
-TEST(DeflationSpaceTest, CoarseMatrixIsTheGalerkinProductOfTheIndicators) {
+// Singleton pixels are pieces of their own; the rest are split as without them.
+TEST(DeflationSpaceTest, SingletonPixelsArePiecesOfTheirOwn) {
+  FineLevel fine;
+  multigrid_detail::makeFineLevel(pocketProblem(), fine);
+  std::vector<int> singletons;
+  for (int y = 6; y <= 8; ++y) {
+    for (int x = 15; x <= 17; ++x) singletons.push_back(fine.index(x, y));  // inside the box
+  }
+  singletons.push_back(fine.index(11, 7));  // in front of the hole
+  DeflationSpace space;
+  space.build(fine, singletons);
+  const std::uint32_t* labels = space.labels();
+  std::set<std::uint32_t> singleton_labels;
+  for (const int p : singletons) singleton_labels.insert(labels[p]);
+  EXPECT_EQ(singleton_labels.size(), singletons.size());
+  const std::set<int> listed(singletons.begin(), singletons.end());
+  for (int y = 0; y < fine.height; ++y) {
+    for (int x = 1; x < fine.width; ++x) {
+      const int p = fine.index(x, y);
+      if (!listed.count(p)) {
+        EXPECT_EQ(singleton_labels.count(labels[p]), 0u) << x << ", " << y;
+      }
+    }
+  }
+  // The box's other inner pixels are still one piece, the ring around the singletons included.
+  const std::uint32_t inside = labels[fine.index(13, 4)];
+  EXPECT_EQ(labels[fine.index(20, 11)], inside);
+  EXPECT_EQ(labels[fine.index(14, 7)], inside);
+  EXPECT_EQ(labels[fine.index(18, 7)], inside);
+}
+
+// E = Z^T A Z, and E^-1 applied through solve(), against dense products over all free pixels,
+// without and with singleton pieces (which make E the grid's rows there).
+class GalerkinProductTest : public ::testing::TestWithParam<bool> {};
+
+TEST_P(GalerkinProductTest, CoarseMatrixIsTheGalerkinProductOfTheIndicators) {
   GridProblem problem = pocketProblem();
   problem.fixed[5 * problem.width + 17] = 1;  // a Dirichlet pixel inside the pocket as well
   FineLevel fine;
   multigrid_detail::makeFineLevel(problem, fine);
+  std::vector<int> singletons;
+  if (GetParam()) {
+    for (int y = 4; y <= 6; ++y) {
+      for (int x = 16; x <= 18; ++x) {
+        if (fine.isFree(fine.index(x, y))) singletons.push_back(fine.index(x, y));
+      }
+    }
+  }
   DeflationSpace space;
-  space.build(fine);
+  space.build(fine, singletons);
   const int k = space.count();
   ASSERT_GE(k, 2);
   const int n = static_cast<int>(fine.size);
@@ -109,6 +151,8 @@ TEST(DeflationSpaceTest, CoarseMatrixIsTheGalerkinProductOfTheIndicators) {
   space.solve(g);  // E^-1
   EXPECT_LT((e * g - Eigen::MatrixXd::Identity(k, k)).cwiseAbs().maxCoeff(), 1e-9);
 }
+
+INSTANTIATE_TEST_SUITE_P(WithoutAndWithSingletons, GalerkinProductTest, ::testing::Bool());
 
 DiffusionCurve barrier(const Point2& from, const Point2& to) {
   DiffusionCurve curve = lineCurve(from, to, Color::Zero(), Color::Zero());

@@ -41,6 +41,11 @@ struct MultigridOptions {
   /// 128 px squares) from CG's directions (see docs/rendering.md): regions behind such necks,
   /// like the ladybug's leg pockets, then converge in fewer iterations.
   bool deflation = true;
+  /// With deflation: the free pixels around those where the V-cycle's correction was largest
+  /// when the deflation started (the regions that the V-cycle corrects slowest) become pieces
+  /// of one pixel each, if they are few; CG then no longer spends iterations on their error
+  /// (the ladybug at 512 px: 3 instead of 6; see docs/rendering.md).
+  bool singleton_pieces = true;
   /// Symmetric Gauss-Seidel sweeps (forwards and backwards) on the finest level's start around
   /// the pixels whose residual is large, before CG (0: none): FMG's start is poor at a few
   /// spots that P cannot represent (sharp wave tips, curve ends), and the V-cycle reduces them
