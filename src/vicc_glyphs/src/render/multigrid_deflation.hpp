@@ -9,7 +9,9 @@
 // 2009): the free pixels split where necks up to two pixels wide are cut, and further into
 // kTileSize squares; Z holds one indicator vector per piece, and every CG direction is made
 // A-orthogonal to them with one small sparse solve E c = Z^T A z, E = Z^T A Z (A Z is 0 except
-// at the pixels with a link leaving their piece, so Z^T A z is cheap).
+// at the pixels with a link leaving their piece, so Z^T A z is cheap). The solver may also name
+// pixels that are pieces of one pixel each (where the V-cycle corrects slowest): Z then spans
+// every function there, and E holds A's own rows for them.
 
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
