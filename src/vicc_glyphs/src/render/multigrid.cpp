@@ -505,8 +505,8 @@ class Multigrid {
   // The deflation's singleton pieces: the free pixels within kSingletonRadius of those where
   // the last V-cycle's correction z (B r) is at least a share of its largest magnitude over
   // all channels, the first of kSingletonShares that gives at most one per kMaxSingletonShare
-  // free pixels (else none: the factorisation of E would cost more than the iterations it
-  // saves).
+  // free pixels and at most kMaxSingletons (else none: the factorisation of E would cost more
+  // than the iterations it saves).
   const std::vector<int>& singletonPixels() {
     static const std::vector<int> kNone;
     if (!options_.singleton_pieces) return kNone;
@@ -516,7 +516,7 @@ class Multigrid {
     float largest = 0.0f;
     for (int c = 0; c < C; ++c) largest = std::max(largest, channel(magnitudes, c));
     if (!(largest > 0.0f)) return kNone;
-    const size_t limit = free_count_ / kMaxSingletonShare;
+    const size_t limit = std::min(free_count_ / kMaxSingletonShare, kMaxSingletons);
     const int side = 2 * kSingletonRadius + 1;
     const cv::Mat square = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(side, side));
     // The fine level's layout, ghost border included (its marks stay 0, the dilation's are
@@ -1101,11 +1101,17 @@ class Multigrid {
   // Singleton pieces (see singletonPixels; measurements in docs/rendering.md, session 30). On
   // the ladybug at 512 px 0.15 picks 7,338 pixels (3 iterations instead of 6), 0.1 14,751 (3,
   // but E's factorisation costs more than they save); at 1024 px 0.15 picks 133,867 pixels,
-  // 0.25 19,235 (4 iterations instead of 10). At most 1/32 of the free pixels: the blur field
-  // of heart_glow (512 px) had 9,454 at 0.25 and solved 3 ms slower with them.
+  // 0.25 19,235 (4 iterations instead of 10); at 768 px both pick too many (0.4 would do, 4
+  // iterations instead of 6 for 2 % fewer instructions, but on a fast-converging circle it
+  // made the error estimate rise from one iteration to the next). At most 1/32 of the free
+  // pixels: the blur field of heart_glow (512 px) had 9,454 at 0.25 and solved 3 ms slower.
   static constexpr float kSingletonShares[] = {0.15f, 0.25f};
   static constexpr int kSingletonRadius = 3;
   static constexpr size_t kMaxSingletonShare = 32;
+  // E's factorisation grows faster than the pixel count (about n^1.5 for n singletons in a
+  // region): the ladybug at 2048 px takes 80,362 (3 iterations instead of 6); 3072 and 4096 px
+  // take none (their shares pick more than 1/32), and nothing larger than 2^17 is tried.
+  static constexpr size_t kMaxSingletons = size_t{1} << 17;
 };
 
 }  // namespace
