@@ -45,7 +45,7 @@ class DeflationSpace {
   }
 
  private:
-  // Side of the squares the regions are split into (see splitIntoTiles).
+  // Side of the squares the regions are split into: joinPieces joins no link across their edges.
   static constexpr int kTileSize = 128;
   // interior_: kInterior, kSingleton (a piece of its own, joins nothing) or 0.
   static constexpr std::uint8_t kInterior = 1, kSingleton = 2;
