@@ -45,7 +45,8 @@ if(CATKIN_ENABLE_TESTING)
     test/render/BarrierConvergenceTest.cpp
     test/render/GalerkinCoarseningTest.cpp
     test/render/DeflationTest.cpp
-    test/render/LocalRelaxationTest.cpp)
+    test/render/LocalRelaxationTest.cpp
+    test/render/CurveAntialiasingTest.cpp)
   target_compile_options(vicc_glyphs_render_test PRIVATE ${VICC_WARNINGS})
   # GalerkinCoarseningTest checks the solver's internal operators.
   target_include_directories(vicc_glyphs_render_test PRIVATE src/render)

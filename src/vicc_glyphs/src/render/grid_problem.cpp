@@ -118,8 +118,8 @@ void assembleGridProblem(const DiffusionCurveImage& image, double scale, const S
                          const std::vector<double>& background, GridProblem& problem,
                          render_detail::PixelVector<int>& counts,
                          render_detail::PixelVector<float>& nearest,
-                         render_detail::PixelVector<std::uint8_t>& reached,
-                         std::vector<int>& queue) {
+                         render_detail::PixelVector<std::uint8_t>& reached, std::vector<int>& queue,
+                         std::vector<LatticeCrossing>* visited) {
   const int n = problem.pixelCount();
   const int width = problem.width, height = problem.height, channels = problem.channels;
   if (n == 0) return;
@@ -152,6 +152,7 @@ void assembleGridProblem(const DiffusionCurveImage& image, double scale, const S
     }
   };
   forEachLatticeCrossing(image, scale, width, height, [&](const LatticeCrossing& crossing) {
+    if (visited) visited->push_back(crossing);
     const DiffusionCurve& curve = image.curves[crossing.curve];
     cutLink(problem, crossing.left_pixel, crossing.right_pixel);
     constrain(curve, true, crossing.position, crossing.left_pixel, crossing.left_link_distance);
@@ -178,8 +179,9 @@ void GridAssembler::assembleColor(const DiffusionCurveImage& image, int width, i
     return true;
   };
   resetProblem(problem, width, height, 3);
+  color_crossings_.clear();
   assembleGridProblem(image, scale, sample, {background[0], background[1], background[2]}, problem,
-                      counts_, nearest_, reached_, queue_);
+                      counts_, nearest_, reached_, queue_, &color_crossings_);
 }
 
 void GridAssembler::assembleBlur(const DiffusionCurveImage& image, int width, int height,
@@ -189,7 +191,8 @@ void GridAssembler::assembleBlur(const DiffusionCurveImage& image, int width, in
     return true;
   };
   resetProblem(problem, width, height, 1);
-  assembleGridProblem(image, scale, sample, {0.0}, problem, counts_, nearest_, reached_, queue_);
+  assembleGridProblem(image, scale, sample, {0.0}, problem, counts_, nearest_, reached_, queue_,
+                      nullptr);
 }
 
 GridProblem assembleColorProblem(const DiffusionCurveImage& image, int width, int height,

@@ -133,7 +133,8 @@ void DiffusionCurveRenderer::render(const DiffusionCurveImage& input, const Rend
   if (options.antialias) {
     if (result.image.data == result.diffused.data) result.image.release();  // blend can't alias
     float* blended = prepareOutput(result.image, image.height, image.width, CV_32FC3);
-    w.antialiasing.blend(image, image.width, image.height, 3, diffused, blended);
+    w.antialiasing.blend(w.assembler.colorCrossings(), image.width, image.height, 3, diffused,
+                         blended);
   } else {
     result.diffused.copyTo(result.image);
   }

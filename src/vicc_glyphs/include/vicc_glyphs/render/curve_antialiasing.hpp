@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
+#include "vicc_glyphs/render/lattice_crossings.hpp"
 
 namespace vicc_glyphs {
 
@@ -22,17 +23,28 @@ class CurveAntialiasing {
   /// As above on raw buffers of width*height*channels floats (e.g. cv::Mat pixels).
   void blend(const DiffusionCurveImage& image, int width, int height, int channels,
              const float* diffused, float* blended);
+  /// As above with the image's lattice crossings at scale 1 on the width x height grid, in
+  /// forEachLatticeCrossing's order (e.g. GridAssembler::colorCrossings()).
+  void blend(const std::vector<LatticeCrossing>& crossings, int width, int height, int channels,
+             const float* diffused, float* blended);
 
  private:
-  // A crossing next to `pixel`; only pixels next to a curve have any, so they are kept in a
-  // list (a few thousand at 512 x 512) rather than in a per-pixel array.
-  struct Candidate {
+  // The nearest crossing next to `pixel` so far; only pixels next to a curve have any, so
+  // they are kept in a list (a few thousand at 512 x 512, tens of thousands for a glyph with
+  // high-frequency waves), found through `slot_`.
+  struct Nearest {
     int pixel;
-    int across;       // pixel index on the other side of the curve
-    double distance;  // compared unrounded, as the crossings come
+    int across;      // pixel index on the other side of the curve; -1 while none is nearer
+    float distance;  // than this (+inf at first)
     float footprint;
   };
-  std::vector<Candidate> candidates_;
+  void consider(int pixel, int across, double distance, double footprint);
+
+  std::vector<LatticeCrossing> crossings_;  // of the image, for the overloads that take one
+  std::vector<Nearest> nearest_;
+  // Per pixel its index in nearest_, or -1: all -1 between calls (each call resets the
+  // entries it set), so the array is filled once per image size.
+  std::vector<int> slot_;
 };
 
 /// One-off, in-place version of CurveAntialiasing::blend.

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
+#include "vicc_glyphs/render/lattice_crossings.hpp"
 #include "vicc_glyphs/render/pixel_buffer.hpp"
 
 namespace vicc_glyphs {
@@ -45,8 +46,13 @@ class GridAssembler {
   /// pixels) on both sides of every curve, 0 where a curve has no blur points.
   void assembleBlur(const DiffusionCurveImage& image, int width, int height, double scale,
                     GridProblem& problem);
+  /// The lattice crossings the last assembleColor was built from, in their order: the
+  /// anti-aliasing pass needs the same ones and takes them from here instead of cutting the
+  /// curves with the lattice again.
+  const std::vector<LatticeCrossing>& colorCrossings() const { return color_crossings_; }
 
  private:
+  std::vector<LatticeCrossing> color_crossings_;
   render_detail::PixelVector<int> counts_;
   render_detail::PixelVector<float> nearest_;
   render_detail::PixelVector<std::uint8_t> reached_;
