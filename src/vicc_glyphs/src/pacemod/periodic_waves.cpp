@@ -139,10 +139,10 @@ void capAround(WavedContour& contour, double u, bool last_round) {
 // original's crossing. Per pair of lines (a < b) the points.
 class InheritedCrossings {
  public:
-  explicit InheritedCrossings(const DiffusionCurveImage& image) {
+  InheritedCrossings(const DiffusionCurveImage& image, CrossingFinder& finder) {
     std::vector<Polyline> lines;
     for (const DiffusionCurve& curve : image.curves) lines.push_back(sampleCurve(curve, 16));
-    for (const Crossing& crossing : findCrossings(lines, kCrossingCellPx)) {
+    for (const Crossing& crossing : finder.find(lines, kCrossingCellPx)) {
       points_[{crossing.a.line, crossing.b.line}].push_back(crossingPoint(lines, crossing));
     }
   }
@@ -171,6 +171,7 @@ std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
                                    const Context& context) {
   std::map<int, int> left;
   std::optional<InheritedCrossings> inherited;  // built at the first crossing (most have none)
+  CrossingFinder finder;
   // Sampled once; a round samples again only the contours it rebuilt.
   std::vector<Polyline> lines;
   std::vector<std::vector<double>> parameters(image.curves.size());
@@ -181,11 +182,11 @@ std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
   }
   const int last_round = kMaxRepairRounds + kMaxFlatteningRounds;
   for (int round = 0; round <= last_round; ++round) {
-    const std::vector<Crossing> crossings = findCrossings(lines, kCrossingCellPx);
+    const std::vector<Crossing> crossings = finder.find(lines, kCrossingCellPx);
     std::map<int, bool> changed;
     left.clear();
     for (const Crossing& crossing : crossings) {
-      if (!inherited) inherited.emplace(image);
+      if (!inherited) inherited.emplace(image, finder);
       if (inherited->contains(lines, crossing)) continue;
       for (const SegmentRef& side : {crossing.a, crossing.b}) {
         ++left[side.line];

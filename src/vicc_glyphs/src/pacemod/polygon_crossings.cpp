@@ -43,11 +43,12 @@ struct SegmentBox {
 // holds bucketed[start[c]] ... bucketed[start[c + 1] - 1], the boxes in increasing lo.x, so
 // that a sweep along x meets only the pairs whose x ranges overlap). The boxes are made from
 // the polylines in each pass instead of kept: a high-frequency wave has hundreds of thousands
-// of segments, and fresh memory costs page faults.
+// of segments, and fresh memory costs page faults (the bucket arrays are the caller's, kept
+// between searches for the same reason).
 struct SegmentGrid {
   static constexpr double kMaxCells = 1 << 22;
-  std::vector<SegmentBox> bucketed;
-  std::vector<int> start;
+  std::vector<SegmentBox>& bucketed;
+  std::vector<int>& start;
   Point2 origin = Point2::Zero();
   double cell = 1.0, inverse_cell = 1.0;
   long long nx = 0, ny = 0;
@@ -82,7 +83,10 @@ struct SegmentGrid {
     }
   }
 
-  SegmentGrid(const std::vector<Polyline>& lines, double min_cell) {
+  SegmentGrid(const std::vector<Polyline>& lines, double min_cell,
+              std::vector<SegmentBox>& bucketed_storage, std::vector<int>& start_storage)
+      : bucketed(bucketed_storage), start(start_storage) {
+    start.clear();
     if (!(min_cell > 0.0) || !std::isfinite(min_cell)) {
       throw std::invalid_argument("findCrossings: the cell size must be a finite number > 0");
     }
@@ -142,12 +146,24 @@ Point2 crossingPoint(const std::vector<Polyline>& lines, const Crossing& crossin
                       b[crossing.b.segment + 1]);
 }
 
+struct CrossingFinder::Buckets {
+  std::vector<SegmentBox> bucketed;
+  std::vector<int> start;
+};
+
+CrossingFinder::CrossingFinder() : buckets_(std::make_unique<Buckets>()) {}
+CrossingFinder::~CrossingFinder() = default;
+
 std::vector<Crossing> findCrossings(const std::vector<Polyline>& lines, double cell) {
+  return CrossingFinder().find(lines, cell);
+}
+
+std::vector<Crossing> CrossingFinder::find(const std::vector<Polyline>& lines, double cell) {
   std::vector<char> closed(lines.size());
   for (std::size_t l = 0; l < lines.size(); ++l) {
     closed[l] = lines[l].size() > 1 && (lines[l].front() - lines[l].back()).norm() < 1e-9;
   }
-  const SegmentGrid grid(lines, cell);
+  const SegmentGrid grid(lines, cell, buckets_->bucketed, buckets_->start);
   std::vector<Crossing> crossings;
   for (long long c = 0; c + 1 < static_cast<long long>(grid.start.size()); ++c) {
     for (int a = grid.start[c]; a < grid.start[c + 1]; ++a) {

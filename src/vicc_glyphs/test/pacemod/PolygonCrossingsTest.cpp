@@ -68,6 +68,27 @@ TEST(PolygonCrossingsTest, FindsExactlyTheCrossingsOfTheExhaustiveCheckOnce) {
   }
 }
 
+// One finder for a sequence of searches (as the repair rounds use it): larger and smaller sets,
+// other extents, none at all; each time exactly the exhaustive check's crossings.
+TEST(PolygonCrossingsTest, AReusedFinderKeepsNothingOfTheSearchBefore) {
+  std::mt19937 random(11);
+  CrossingFinder finder;
+  for (const auto& [line_count, extent] : std::vector<std::pair<int, double>>{
+           {4, 64.0}, {1, 16.0}, {0, 0.0}, {3, 200.0}, {2, 8.0}, {4, 64.0}}) {
+    std::uniform_real_distribution<double> coordinate(0.0, extent);
+    std::vector<Polyline> lines(line_count);
+    for (Polyline& line : lines) {
+      for (int k = 0; k < 20; ++k) line.push_back({coordinate(random), coordinate(random)});
+      line.push_back(line.front());
+    }
+    const std::vector<Crossing> crossings = finder.find(lines, 2.0);
+    std::set<PairKey> reported;
+    for (const Crossing& c : crossings) reported.insert(key(c.a, c.b));
+    EXPECT_EQ(reported.size(), crossings.size());
+    EXPECT_EQ(reported, exhaustiveCrossings(lines)) << line_count << " lines over " << extent;
+  }
+}
+
 TEST(PolygonCrossingsTest, NeighboursAndTouchingEndsDoNotCount) {
   const Polyline square{{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}};
   EXPECT_TRUE(findCrossings({square}).empty());

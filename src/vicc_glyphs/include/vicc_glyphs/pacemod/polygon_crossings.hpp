@@ -2,6 +2,7 @@
 // Proper crossings between polyline segments (the polygon check for self-intersections of
 // modified contours), found with a uniform grid of segment buckets.
 
+#include <memory>
 #include <vector>
 
 #include "vicc_glyphs/pacemod/polyline.hpp"
@@ -25,6 +26,24 @@ struct Crossing {
 /// coarser one is used where a finer grid would exceed 4M cells (same result, more pairs tried).
 /// Throws std::invalid_argument for a cell that is not > 0 or coordinates whose extent overflows.
 std::vector<Crossing> findCrossings(const std::vector<Polyline>& lines, double cell = 8.0);
+
+/// findCrossings with its buckets kept between calls: the polygon check searches the same
+/// contours again in every repair round, and buckets of hundreds of thousands of segments in
+/// fresh memory cost a page fault per 4 KiB, as much as the search itself.
+class CrossingFinder {
+ public:
+  CrossingFinder();
+  ~CrossingFinder();
+  CrossingFinder(const CrossingFinder&) = delete;
+  CrossingFinder& operator=(const CrossingFinder&) = delete;
+
+  /// As findCrossings(lines, cell).
+  std::vector<Crossing> find(const std::vector<Polyline>& lines, double cell = 8.0);
+
+ private:
+  struct Buckets;
+  std::unique_ptr<Buckets> buckets_;
+};
 
 /// Where the two segments of a crossing of `lines` (as found by findCrossings) meet.
 Point2 crossingPoint(const std::vector<Polyline>& lines, const Crossing& crossing);
