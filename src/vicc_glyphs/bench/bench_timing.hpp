@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "vicc_glyphs/render/process_heap.hpp"
+
 namespace vicc_glyphs::bench {
 
 /// CPU time of this thread in milliseconds: "one core", and not counting other processes that
@@ -16,6 +18,14 @@ inline double threadCpuMilliseconds() {
   timespec now{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
   return now.tv_sec * 1e3 + now.tv_nsec * 1e-6;
+}
+
+/// Sets malloc as the glyph server node sets it for its process (keepFreedMemoryForReuse),
+/// unless `default_heap` (the benches' --default-heap); says which for the output.
+inline std::string heapAsInTheServer(bool default_heap) {
+  if (default_heap) return "glibc defaults (--default-heap)";
+  return keepFreedMemoryForReuse() ? "freed memory kept for reuse, as in glyph_server"
+                                   : "glibc defaults (the C library refused the setting)";
 }
 
 /// The middle value (the upper one of an even count); 0 for none.

@@ -63,6 +63,11 @@ if(TARGET vicc_glyphs_render AND TARGET vicc_glyphs_io)
     VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
   target_link_libraries(vicc_glyphs_pacemod_bench vicc_glyphs_pacemod_measure vicc_glyphs_io vicc_common_cli
     vicc_glyphs_render)
+  if(TARGET vicc_glyph_bench_usage_test)  # cli.cmake: the benches' command-line tests
+    target_compile_definitions(vicc_glyph_bench_usage_test PRIVATE
+      VICC_GLYPHS_PACEMOD_BENCH_BINARY="$<TARGET_FILE:vicc_glyphs_pacemod_bench>")
+    add_dependencies(vicc_glyph_bench_usage_test vicc_glyphs_pacemod_bench)
+  endif()
 endif()
 
 if(CATKIN_ENABLE_TESTING)

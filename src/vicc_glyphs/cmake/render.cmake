@@ -11,7 +11,8 @@ add_library(vicc_glyphs_render
   src/render/curve_antialiasing.cpp
   src/render/variable_blur.cpp
   src/render/renderer.cpp
-  src/render/png_output.cpp)
+  src/render/png_output.cpp
+  src/render/process_heap.cpp)
 target_compile_options(vicc_glyphs_render PRIVATE ${VICC_WARNINGS})
 target_include_directories(vicc_glyphs_render SYSTEM PUBLIC ${OpenCV_INCLUDE_DIRS})
 target_link_libraries(vicc_glyphs_render vicc_glyphs_dci vicc_glyphs_png ${VICC_GLYPHS_OPENCV})
@@ -46,7 +47,8 @@ if(CATKIN_ENABLE_TESTING)
     test/render/GalerkinCoarseningTest.cpp
     test/render/DeflationTest.cpp
     test/render/LocalRelaxationTest.cpp
-    test/render/CurveAntialiasingTest.cpp)
+    test/render/CurveAntialiasingTest.cpp
+    test/render/ProcessHeapTest.cpp)
   target_compile_options(vicc_glyphs_render_test PRIVATE ${VICC_WARNINGS})
   # GalerkinCoarseningTest checks the solver's internal operators.
   target_include_directories(vicc_glyphs_render_test PRIVATE src/render)

@@ -90,6 +90,7 @@ const std::vector<cli::OptionSpec> kOptionSpecs = {
     {"model", "MODEL.yaml",
      "perception model (default: the package's config/perception_model.yaml)"},
     {"times", "FILE.tsv", "CPU ms per glyph (build, render, total) and CG iterations"},
+    {"default-heap", "", "glibc's default malloc settings instead of the glyph server's"},
 };
 
 std::string usage() {
@@ -125,8 +126,10 @@ int run(const std::vector<std::string>& args) {
   }
   cv::setNumThreads(1);  // one core: OpenCV's distance transforms would use every core
   const perception::PerceptionModel model = perception::loadPerceptionModel(model_path);
+  const std::string heap = bench::heapAsInTheServer(parsed.flag("default-heap"));
   DiffusionCurveRenderer renderer;
-  std::printf("load average at the start %s\n\n", bench::loadAverage().c_str());
+  std::printf("heap: %s, load average at the start %s\n\n", heap.c_str(),
+              bench::loadAverage().c_str());
   std::printf(
       "| design | size px | glyphs | import ms (once) | build ms median | build ms p95 | render ms "
       "median | render ms p95 | total ms median | total ms p95 | total ms max | over %.0f ms "

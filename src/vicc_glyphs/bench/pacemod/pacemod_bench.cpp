@@ -6,7 +6,7 @@
 // Usage (--help): vicc_glyphs_pacemod_bench [ICON_DIR] [--quick] [--verbose] [--opencv-labels]
 //        [--waveform sine|triangle|sawtooth|rectangle] [--no-render]
 //        [--icon NAME.svg] [--frequency WAVES_PER_10MM] [--amplitude MM] [--overlays DIR]
-//        [--times FILE.tsv]
+//        [--times FILE.tsv] [--default-heap]
 
 #include <algorithm>
 #include <cstdio>
@@ -157,6 +157,7 @@ const std::vector<cli::OptionSpec> kOptionSpecs = {
     {"amplitude", "A", "only this amplitude, mm"},
     {"overlays", "DIR", "an SVG picture of every glyph that fails a check or has a new sharp turn"},
     {"times", "FILE.tsv", "CPU ms per glyph (import, modify, render, total) and CG iterations"},
+    {"default-heap", "", "glibc's default malloc settings instead of the glyph server's"},
 };
 
 std::string usage() {
@@ -212,11 +213,12 @@ int run(const std::vector<std::string>& args) {
       quick ? std::vector<double>{0.5} : std::vector<double>{0.1, 0.4, 0.8, 1.2};
   if (only_frequency > 0.0) frequencies = {only_frequency};
   if (only_amplitude >= 0.0) amplitudes = {only_amplitude};
+  const std::string heap = bench::heapAsInTheServer(parsed.flag("default-heap"));
   DiffusionCurveRenderer renderer;
   RenderResult result;
   std::map<std::string, Totals> by_waveform;
-  std::printf("%zu icons, %d px = %.0f mm, load average at the start %s\n\n", icons.size(), kSize,
-              kSizeMm, bench::loadAverage().c_str());
+  std::printf("%zu icons, %d px = %.0f mm, heap: %s, load average at the start %s\n\n",
+              icons.size(), kSize, kSizeMm, heap.c_str(), bench::loadAverage().c_str());
   printHeader("waveform, waves/10 mm, amplitude mm");
   for (Waveform waveform :
        {Waveform::Sine, Waveform::Triangle, Waveform::Sawtooth, Waveform::Rectangle}) {

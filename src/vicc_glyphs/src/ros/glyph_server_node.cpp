@@ -3,10 +3,16 @@
 
 #include <iostream>
 
+#include "vicc_glyphs/render/process_heap.hpp"
 #include "vicc_glyphs/ros/glyph_server.hpp"
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "glyph_server");
+  // The node's process is its own (unlike the nodelet's): glyph after glyph reuses the heap
+  // instead of faulting in fresh pages for every large buffer.
+  if (!vicc_glyphs::keepFreedMemoryForReuse()) {
+    ROS_WARN("glyph_server: could not set malloc to keep freed memory; glyphs take longer");
+  }
   try {
     vicc_glyphs::ros_glyph::GlyphServer server(ros::NodeHandle(), ros::NodeHandle("~"));
     ros::spin();

@@ -44,4 +44,25 @@ TEST(BenchUsage, FeatureTransformBench) {
   expectUsageError(VICC_GLYPHS_FEATURE_TRANSFORM_BENCH_BINARY, "--grid 3", "--grid");
 }
 
+#ifdef VICC_GLYPHS_PACEMOD_BENCH_BINARY  // built with the PACEMOD part (pacemod.cmake)
+// The bench says which malloc settings its times were taken with: those of the glyph server's
+// process unless --default-heap.
+TEST(BenchUsage, PacemodBenchSaysWhichHeapItMeasuresWith) {
+  expectUsageError(VICC_GLYPHS_PACEMOD_BENCH_BINARY, "--waveform square", "--waveform");
+  const std::string one_glyph = std::string(VICC_GLYPHS_PACEMOD_BENCH_BINARY) +
+                                " --icon bell.svg --waveform sine --frequency 2 --amplitude 0.4"
+                                " --no-render";
+  const vicc_test::CommandResult server = vicc_test::runCommand(one_glyph);
+  EXPECT_EQ(server.exit_code, 0) << server.output;
+  EXPECT_NE(server.output.find("heap: freed memory kept for reuse, as in glyph_server"),
+            std::string::npos)
+      << server.output;
+  EXPECT_NE(server.output.find("| sine, 2, 0.4 | 1 |"), std::string::npos) << server.output;
+  const vicc_test::CommandResult plain = vicc_test::runCommand(one_glyph + " --default-heap");
+  EXPECT_EQ(plain.exit_code, 0) << plain.output;
+  EXPECT_NE(plain.output.find("heap: glibc defaults (--default-heap)"), std::string::npos)
+      << plain.output;
+}
+#endif
+
 }  // namespace
