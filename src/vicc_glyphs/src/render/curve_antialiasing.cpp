@@ -34,7 +34,7 @@ void CurveAntialiasing::blend(const DiffusionCurveImage& image, int width, int h
   blend(crossings_, width, height, channels, diffused, blended);
 }
 
-void CurveAntialiasing::blend(const std::vector<LatticeCrossing>& crossings, int width, int height,
+void CurveAntialiasing::blend(const LatticeCrossingList& crossings, int width, int height,
                               int channels, const float* diffused, float* blended) {
   const int n = width * height;
   if (n <= 0) return;

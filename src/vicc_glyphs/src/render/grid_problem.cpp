@@ -119,7 +119,7 @@ void assembleGridProblem(const DiffusionCurveImage& image, double scale, const S
                          render_detail::PixelVector<int>& counts,
                          render_detail::PixelVector<float>& nearest,
                          render_detail::PixelVector<std::uint8_t>& reached, std::vector<int>& queue,
-                         std::vector<LatticeCrossing>* visited) {
+                         LatticeCrossingList* visited) {
   const int n = problem.pixelCount();
   const int width = problem.width, height = problem.height, channels = problem.channels;
   if (n == 0) return;

@@ -25,7 +25,7 @@ class CurveAntialiasing {
              const float* diffused, float* blended);
   /// As above with the image's lattice crossings at scale 1 on the width x height grid, in
   /// forEachLatticeCrossing's order (e.g. GridAssembler::colorCrossings()).
-  void blend(const std::vector<LatticeCrossing>& crossings, int width, int height, int channels,
+  void blend(const LatticeCrossingList& crossings, int width, int height, int channels,
              const float* diffused, float* blended);
 
  private:
@@ -40,11 +40,12 @@ class CurveAntialiasing {
   };
   void consider(int pixel, int across, double distance, double footprint);
 
-  std::vector<LatticeCrossing> crossings_;  // of the image, for the overloads that take one
+  LatticeCrossingList crossings_;  // of the image, for the overloads that take one
   std::vector<Nearest> nearest_;
   // Per pixel its index in nearest_, or -1: all -1 between calls (each call resets the
-  // entries it set), so the array is filled once per image size.
-  std::vector<int> slot_;
+  // entries it set), so the array is filled once per image size; in huge pages like the
+  // renderer's other per-pixel buffers (a fresh renderer first-touches it).
+  render_detail::PixelVector<int> slot_;
 };
 
 /// One-off, in-place version of CurveAntialiasing::blend.

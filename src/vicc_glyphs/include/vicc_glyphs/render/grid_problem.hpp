@@ -49,10 +49,10 @@ class GridAssembler {
   /// The lattice crossings the last assembleColor was built from, in their order: the
   /// anti-aliasing pass needs the same ones and takes them from here instead of cutting the
   /// curves with the lattice again.
-  const std::vector<LatticeCrossing>& colorCrossings() const { return color_crossings_; }
+  const LatticeCrossingList& colorCrossings() const { return color_crossings_; }
 
  private:
-  std::vector<LatticeCrossing> color_crossings_;
+  LatticeCrossingList color_crossings_;
   render_detail::PixelVector<int> counts_;
   render_detail::PixelVector<float> nearest_;
   render_detail::PixelVector<std::uint8_t> reached_;

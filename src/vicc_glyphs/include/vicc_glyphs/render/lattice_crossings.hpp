@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
+#include "vicc_glyphs/render/pixel_buffer.hpp"
 
 namespace vicc_glyphs {
 
@@ -33,6 +34,10 @@ struct LatticeCrossing {
   /// from the curve a pixel centre must be for its square not to touch the curve.
   double footprint = 0.5;
 };
+
+/// Crossings kept for a second pass, in memory that a fresh renderer first-touches cheaply
+/// (pixel_buffer.hpp): a glyph with high-frequency waves has tens of thousands.
+using LatticeCrossingList = render_detail::PixelVector<LatticeCrossing>;
 
 /// Calls `visit` for every crossing of the curves of `image`, scaled by `scale` (grid pixels
 /// per image pixel), with a grid of `width` x `height` pixels. Crossings whose both pixels lie
