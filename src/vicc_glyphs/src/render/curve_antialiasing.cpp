@@ -42,7 +42,8 @@ void CurveAntialiasing::blend(const LatticeCrossingList& crossings, int width, i
   const auto inside = [&](const GridPixel& p) {
     return p.x >= 0 && p.y >= 0 && p.x < width && p.y < height;
   };
-  if (slot_.size() != static_cast<size_t>(n)) slot_.assign(n, -1);
+  if (slot_.size() != static_cast<size_t>(n) || !slots_clean_) slot_.assign(n, -1);
+  slots_clean_ = false;
   nearest_.clear();
   for (const LatticeCrossing& crossing : crossings) {
     if (!inside(crossing.left_pixel) || !inside(crossing.right_pixel)) continue;
@@ -61,6 +62,7 @@ void CurveAntialiasing::blend(const LatticeCrossingList& crossings, int width, i
       blended[own] = (1.0f - across_share) * diffused[own] + across_share * diffused[across];
     }
   }
+  slots_clean_ = true;
 }
 
 void blendAcrossCurves(const DiffusionCurveImage& image, int width, int height, int channels,

@@ -46,6 +46,9 @@ class CurveAntialiasing {
   // entries it set), so the array is filled once per image size; in huge pages like the
   // renderer's other per-pixel buffers (a fresh renderer first-touches it).
   render_detail::PixelVector<int> slot_;
+  // False from a call's first slot until its last reset: a call that threw in between (out of
+  // memory) left entries that the next call must not trust.
+  bool slots_clean_ = true;
 };
 
 /// One-off, in-place version of CurveAntialiasing::blend.
