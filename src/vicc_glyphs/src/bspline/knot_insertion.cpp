@@ -9,54 +9,84 @@ namespace vicc_glyphs {
 namespace bspline {
 namespace {
 
-// One Boehm step (Eq. 2.41 with r = 1): the p - 1 de Boor points d_{l-p+1} .. d_{l-1} are
-// replaced by p points on the control polygon; `span` is l with
-// t_l <= u < t_{l+1} (or the last non-empty span when u is the domain end).
-BSplineCurve insertOnce(const BSplineCurve& curve, double u) {
-  const int p = curve.degree();
-  const int span = curve.findSpan(u);
-  const std::vector<double>& t = curve.knots();
-  const std::vector<Point2>& d = curve.controlPoints();
+// A curve's knots and de Boor points refined in place: a splice cuts a wave of thousands of
+// pieces at dozens of places, and a curve copied (and validated) per inserted knot made that
+// quadratic in the wave's size.
+class InPlaceRefinement {
+ public:
+  explicit InPlaceRefinement(const BSplineCurve& curve)
+      : degree_(curve.degree()), knots_(curve.knots()), points_(curve.controlPoints()) {}
 
-  std::vector<Point2> points;
-  points.reserve(d.size() + 1);
-  for (int i = 0; i <= span - p; ++i) points.push_back(d[i]);
-  for (int i = span - p + 1; i <= span; ++i) {
-    const double alpha = (u - t[i]) / (t[i + p] - t[i]);
-    points.push_back((1.0 - alpha) * d[i - 1] + alpha * d[i]);
+  // insertKnot's checks and `times` Boehm steps, on the refinement so far.
+  void insert(double u, int times) {
+    const double begin = knots_[degree_], end = knots_[points_.size()];
+    if (!std::isfinite(u) || u < begin || u > end) {
+      throw std::invalid_argument("insertKnot: value " + std::to_string(u) +
+                                  " is not inside the domain");
+    }
+    if (times < 1) throw std::invalid_argument("insertKnot: times must be at least 1");
+    const int allowed = u > begin && u < end ? degree_ : degree_ + 1;
+    const auto range = std::equal_range(knots_.begin(), knots_.end(), u);
+    const int multiplicity = static_cast<int>(range.second - range.first);
+    if (multiplicity + times > allowed) {
+      throw std::invalid_argument("insertKnot: knot " + std::to_string(u) + " would occur " +
+                                  std::to_string(multiplicity + times) + " times, at most " +
+                                  std::to_string(allowed) + " allowed");
+    }
+    for (int k = 0; k < times; ++k) insertOnce(u);
   }
-  for (std::size_t i = span; i < d.size(); ++i) points.push_back(d[i]);
 
-  std::vector<double> knots(t.begin(), t.begin() + span + 1);
-  knots.push_back(u);
-  knots.insert(knots.end(), t.begin() + span + 1, t.end());
-  return BSplineCurve(p, std::move(knots), std::move(points));
-}
+  BSplineCurve curve() && { return BSplineCurve(degree_, std::move(knots_), std::move(points_)); }
+
+ private:
+  // BSplineCurve::findSpan of u (inside the domain): l with t_l <= u < t_{l+1}, or the last
+  // non-empty span at the domain's end.
+  int spanOf(double u) const {
+    const int n = static_cast<int>(points_.size()) - 1;
+    if (u >= knots_[n + 1]) {
+      int l = n;
+      while (knots_[l] == knots_[l + 1]) --l;
+      return l;
+    }
+    return static_cast<int>(std::upper_bound(knots_.begin(), knots_.begin() + n + 2, u) -
+                            knots_.begin()) -
+           1;
+  }
+
+  // One Boehm step (Eq. 2.41 with r = 1): the p - 1 de Boor points d_{l-p+1} .. d_{l-1} are
+  // replaced by p points on the control polygon, l = spanOf(u).
+  void insertOnce(double u) {
+    const int p = degree_;
+    const int span = spanOf(u);
+    replaced_.clear();
+    for (int i = span - p + 1; i <= span; ++i) {
+      const double alpha = (u - knots_[i]) / (knots_[i + p] - knots_[i]);
+      replaced_.push_back((1.0 - alpha) * points_[i - 1] + alpha * points_[i]);
+    }
+    const Point2 moved = points_[span];
+    points_.insert(points_.begin() + span, moved);  // d_l .. d_n move up by one
+    std::copy(replaced_.begin(), replaced_.end(), points_.begin() + (span - p + 1));
+    knots_.insert(knots_.begin() + span + 1, u);
+  }
+
+  int degree_;
+  std::vector<double> knots_;
+  std::vector<Point2> points_;
+  std::vector<Point2> replaced_;
+};
 
 }  // namespace
 
 BSplineCurve insertKnot(const BSplineCurve& curve, double u, int times) {
-  if (!std::isfinite(u) || u < curve.domainBegin() || u > curve.domainEnd()) {
-    throw std::invalid_argument("insertKnot: value " + std::to_string(u) +
-                                " is not inside the domain");
-  }
-  if (times < 1) throw std::invalid_argument("insertKnot: times must be at least 1");
-  const bool interior = u > curve.domainBegin() && u < curve.domainEnd();
-  const int allowed = interior ? curve.degree() : curve.degree() + 1;
-  if (curve.multiplicity(u) + times > allowed) {
-    throw std::invalid_argument("insertKnot: knot " + std::to_string(u) + " would occur " +
-                                std::to_string(curve.multiplicity(u) + times) + " times, at most " +
-                                std::to_string(allowed) + " allowed");
-  }
-  BSplineCurve result = curve;
-  for (int k = 0; k < times; ++k) result = insertOnce(result, u);
-  return result;
+  InPlaceRefinement refinement(curve);
+  refinement.insert(u, times);
+  return std::move(refinement).curve();
 }
 
 BSplineCurve insertKnots(const BSplineCurve& curve, const std::vector<double>& values) {
-  BSplineCurve result = curve;
-  for (double u : values) result = insertKnot(result, u, 1);
-  return result;
+  InPlaceRefinement refinement(curve);
+  for (double u : values) refinement.insert(u, 1);
+  return std::move(refinement).curve();
 }
 
 BSplineCurve raiseMultiplicities(const BSplineCurve& curve, int target) {

@@ -318,15 +318,51 @@ Point2 targetOf(const ContourWave& wave, std::size_t i) {
 
 // The wave's signed offset at arc length l between its knot points: the sine's half cosine,
 // linear for the others.
-double waveOffsetAt(const ContourWave& wave, double l) {
+double waveOffsetAt(const ContourWave& wave, double l, std::size_t next) {
   const std::vector<double>& at = wave.parameters;
-  const std::size_t next = std::clamp<std::size_t>(
-      std::upper_bound(at.begin(), at.end(), l) - at.begin(), 1, at.size() - 1);
   const double span = at[next] - at[next - 1];
   double t = span > 0.0 ? std::clamp((l - at[next - 1]) / span, 0.0, 1.0) : 0.0;
   if (wave.layout.waveform == Waveform::Sine) t = 0.5 - 0.5 * std::cos(M_PI * t);
   return (1.0 - t) * appliedOffset(wave, next - 1) + t * appliedOffset(wave, next);
 }
+
+// The knot point after arc length l: the first parameter above l, clamped to [1, count - 1].
+std::size_t knotPointAfter(const std::vector<double>& at, double l) {
+  return std::clamp<std::size_t>(std::upper_bound(at.begin(), at.end(), l) - at.begin(), 1,
+                                 at.size() - 1);
+}
+
+double waveOffsetAt(const ContourWave& wave, double l) {
+  return waveOffsetAt(wave, l, knotPointAfter(wave.parameters, l));
+}
+
+// waveOffsetAt as an OffsetFit::Offset. The fit asks at its samples in increasing order, one
+// or a few per knot span: the span of the last call, or the one after it, is tried before a
+// search (with parameters that do not decrease, the same span the search would find).
+class WaveProfile {
+ public:
+  explicit WaveProfile(const ContourWave& wave)
+      : wave_(&wave), sorted_(std::is_sorted(wave.parameters.begin(), wave.parameters.end())) {}
+
+  double operator()(double l) {
+    const std::vector<double>& at = wave_->parameters;
+    if (!(sorted_ && (holds(next_, l) || holds(++next_, l)))) next_ = knotPointAfter(at, l);
+    return waveOffsetAt(*wave_, l, next_);
+  }
+
+ private:
+  // Whether knotPointAfter(l) is `next`: at[next - 1] <= l < at[next], but without the bound
+  // that the clamping removes at either end.
+  bool holds(std::size_t next, double l) const {
+    const std::vector<double>& at = wave_->parameters;
+    return next < at.size() && (next == 1 || at[next - 1] <= l) &&
+           (next + 1 == at.size() || l < at[next]);
+  }
+
+  const ContourWave* wave_;
+  bool sorted_;
+  std::size_t next_ = 1;
+};
 
 bool occupied(const ContourWave& wave, std::size_t corner) {
   return std::find(wave.on_corner.begin(), wave.on_corner.end(), static_cast<int>(corner)) !=
@@ -410,7 +446,7 @@ InnerCorner innerCornerOf(const ContourFrame& frame, const ContourWave& wave, st
 // within the stretch the fit spreads (innerCornerOf) is left to the fit too, with its
 // amplitude. Twice, as the meeting point moves with the knot points' own amplitudes.
 void limitOnCorners(const ContourFrame& frame, ContourWave& wave) {
-  const detail::OffsetFit::Offset offset = [&wave](double l) { return waveOffsetAt(wave, l); };
+  const detail::OffsetFit::Offset offset = WaveProfile(wave);
   for (int pass = 0; pass < 2; ++pass) {
     const std::vector<Point2> targets = frame.offset_fit->cornerTargets(offset);
     const std::vector<std::pair<double, double>> stretches = swallowedStretches(frame, offset);
@@ -458,7 +494,7 @@ std::size_t peakAt(const WaveLayout& layout, double l) {
 // Sine and rectangle: the offset fit of the wave's profile, then Fowler-Bartels for the knot
 // points and the icon's corners; the rectangle's flanks become strips.
 BSplineCurve smoothWave(const ContourFrame& frame, const ContourWave& wave) {
-  const detail::OffsetFit::Offset offset = [&wave](double l) { return waveOffsetAt(wave, l); };
+  const detail::OffsetFit::Offset offset = WaveProfile(wave);
   const std::vector<Point2> corner_targets = frame.offset_fit->cornerTargets(offset);
   BSplineCurve curve =
       meetTargets(frame.offset_fit->fit(offset, corner_targets), frame, wave, corner_targets);

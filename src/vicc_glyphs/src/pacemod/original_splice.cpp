@@ -23,29 +23,44 @@ struct Part {
   bool original = false;
 };
 
-// `u`, or the curve's breakpoint within a relative 1e-9 of the domain (no sliver pieces).
-double snapToBreakpoint(const BSplineCurve& curve, double u) {
-  const double tolerance = 1e-9 * (curve.domainEnd() - curve.domainBegin());
-  for (double knot : curve.breakpoints()) {
-    if (std::abs(knot - u) <= tolerance) return knot;
+// A curve's breakpoints, to snap parameters to (no sliver pieces): computed once per splice,
+// since a wave has thousands of them and a splice snaps four parameters per run.
+class Breakpoints {
+ public:
+  explicit Breakpoints(const BSplineCurve& curve)
+      : values_(curve.breakpoints()),
+        tolerance_(1e-9 * (curve.domainEnd() - curve.domainBegin())) {}
+
+  // `u`, or the first breakpoint within a relative 1e-9 of the domain of it. Breakpoints below
+  // u - 2 * tolerance cannot be within the tolerance, whatever the rounding of their distance.
+  double snap(double u) const {
+    for (auto it = std::lower_bound(values_.begin(), values_.end(), u - 2.0 * tolerance_);
+         it != values_.end() && *it <= u + 2.0 * tolerance_; ++it) {
+      if (std::abs(*it - u) <= tolerance_) return *it;
+    }
+    return u;
   }
-  return u;
-}
+
+ private:
+  std::vector<double> values_;
+  double tolerance_;
+};
 
 // The curve with each of `cuts` (snapped by the caller) at full multiplicity, as the parts
 // between consecutive cuts (and the domain ends).
 std::vector<Part> splitAt(const BSplineCurve& curve, std::vector<double> cuts, bool original) {
-  BSplineCurve refined = curve;
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
   std::vector<double> bounds{curve.domainBegin()};
+  std::vector<double> inserted;  // each cut as often as it lacks multiplicity, in one pass
   for (double u : cuts) {
     if (u <= curve.domainBegin() || u >= curve.domainEnd()) continue;
-    const int missing = curve.degree() - refined.multiplicity(u);
-    if (missing > 0) refined = bspline::insertKnot(refined, u, missing);
+    const int missing = curve.degree() - curve.multiplicity(u);
+    if (missing > 0) inserted.insert(inserted.end(), missing, u);
     bounds.push_back(u);
   }
   bounds.push_back(curve.domainEnd());
+  const BSplineCurve refined = inserted.empty() ? curve : bspline::insertKnots(curve, inserted);
   const std::vector<double>& knots = refined.knots();
   const std::vector<Point2>& points = refined.controlPoints();
   std::vector<Part> parts;
@@ -147,14 +162,15 @@ BSplineCurve spliceOriginal(const BSplineCurve& wave, const BSplineCurve& origin
                             const std::vector<ArcInterval>& runs_in) {
   std::vector<ArcInterval> runs, spans;  // spans: the runs as the original's parameters
   std::vector<double> cuts;
+  const Breakpoints wave_breaks(wave), original_breaks(original);
   for (const ArcInterval& run : runs_in) {
     if (!(run.end >= run.begin) || run.begin < wave.domainBegin() || run.end > wave.domainEnd() ||
         (!runs.empty() && run.begin < runs.back().end)) {
       throw std::invalid_argument("spliceOriginal: runs must be increasing and in the domain");
     }
-    const ArcInterval snapped{snapToBreakpoint(wave, run.begin), snapToBreakpoint(wave, run.end)};
-    const ArcInterval span{snapToBreakpoint(original, table.parameterAt(snapped.begin)),
-                           snapToBreakpoint(original, table.parameterAt(snapped.end))};
+    const ArcInterval snapped{wave_breaks.snap(run.begin), wave_breaks.snap(run.end)};
+    const ArcInterval span{original_breaks.snap(table.parameterAt(snapped.begin)),
+                           original_breaks.snap(table.parameterAt(snapped.end))};
     // Shorter than the snapping tolerance on either curve: nothing to splice.
     if (!(snapped.end > snapped.begin) || !(span.end > span.begin)) continue;
     runs.push_back(snapped);

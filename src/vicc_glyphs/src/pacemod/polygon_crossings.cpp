@@ -39,12 +39,16 @@ struct SegmentBox {
   Point2 lo, hi;
 };
 
+// The cells a box touches: columns x0..x1, rows y0..y1.
+struct CellRange {
+  long long x0, x1, y0, y1;
+};
+
 // Segments bucketed by the grid cells their bounding boxes touch (a counting sort: cell c
 // holds bucketed[start[c]] ... bucketed[start[c + 1] - 1], the boxes in increasing lo.x, so
-// that a sweep along x meets only the pairs whose x ranges overlap). The boxes are made from
-// the polylines in each pass instead of kept: a high-frequency wave has hundreds of thousands
-// of segments, and fresh memory costs page faults (the bucket arrays are the caller's, kept
-// between searches for the same reason).
+// that a sweep along x meets only the pairs whose x ranges overlap). Each finite segment's box
+// and cell range are made once; the arrays are the caller's, kept between searches, since a
+// high-frequency wave has hundreds of thousands of segments and fresh memory costs page faults.
 struct SegmentGrid {
   static constexpr double kMaxCells = 1 << 22;
   std::vector<SegmentBox>& bucketed;
@@ -62,42 +66,44 @@ struct SegmentGrid {
   long long column(double x) const { return index(x - origin.x(), inverse_cell, nx); }
   long long row(double y) const { return index(y - origin.y(), inverse_cell, ny); }
 
+  CellRange cellsOf(const SegmentBox& box) const {
+    return {column(box.lo.x()), column(box.hi.x()), row(box.lo.y()), row(box.hi.y())};
+  }
+
   template <class Visit>
-  void forEachCell(const SegmentBox& box, Visit&& visit) const {
-    for (long long y = row(box.lo.y()), y_end = row(box.hi.y()); y <= y_end; ++y) {
-      for (long long x = column(box.lo.x()), x_end = column(box.hi.x()); x <= x_end; ++x) {
-        visit(y * nx + x);
-      }
+  void forEachCell(const CellRange& range, Visit&& visit) const {
+    for (long long y = range.y0; y <= range.y1; ++y) {
+      for (long long x = range.x0; x <= range.x1; ++x) visit(y * nx + x);
     }
   }
 
   // Every segment's box, skipping segments with a non-finite end.
-  template <class Visit>
-  static void forEachBox(const std::vector<Polyline>& lines, Visit&& visit) {
+  static void collectBoxes(const std::vector<Polyline>& lines, std::vector<SegmentBox>& boxes) {
+    boxes.clear();
     for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
       for (int i = 0; i + 1 < static_cast<int>(lines[l].size()); ++i) {
         const SegmentBox box{
             {l, i}, lines[l][i].cwiseMin(lines[l][i + 1]), lines[l][i].cwiseMax(lines[l][i + 1])};
-        if (box.lo.allFinite() && box.hi.allFinite()) visit(box);
+        if (box.lo.allFinite() && box.hi.allFinite()) boxes.push_back(box);
       }
     }
   }
 
-  SegmentGrid(const std::vector<Polyline>& lines, double min_cell,
-              std::vector<SegmentBox>& bucketed_storage, std::vector<int>& start_storage)
+  SegmentGrid(const std::vector<Polyline>& lines, double min_cell, std::vector<SegmentBox>& boxes,
+              std::vector<CellRange>& ranges, std::vector<SegmentBox>& bucketed_storage,
+              std::vector<int>& start_storage)
       : bucketed(bucketed_storage), start(start_storage) {
     start.clear();
     if (!(min_cell > 0.0) || !std::isfinite(min_cell)) {
       throw std::invalid_argument("findCrossings: the cell size must be a finite number > 0");
     }
+    collectBoxes(lines, boxes);
+    if (boxes.empty()) return;
     Point2 lo = Point2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    bool any = false;
-    forEachBox(lines, [&](const SegmentBox& box) {
+    for (const SegmentBox& box : boxes) {
       lo = lo.cwiseMin(box.lo);
       hi = hi.cwiseMax(box.hi);
-      any = true;
-    });
-    if (!any) return;
+    }
     origin = lo;
     if (!(hi - lo).allFinite()) throw std::invalid_argument("findCrossings: coordinates too large");
     // A coarser grid finds the same crossings: only the number of pairs tried grows.
@@ -112,13 +118,16 @@ struct SegmentGrid {
     ny = static_cast<long long>(std::floor((hi.y() - lo.y()) / cell)) + 1;
     // Counts per cell, summed up to each cell's end; filling backwards leaves each its start.
     start.assign(static_cast<std::size_t>(nx * ny) + 1, 0);
-    forEachBox(lines,
-               [&](const SegmentBox& box) { forEachCell(box, [&](long long c) { ++start[c]; }); });
+    ranges.resize(boxes.size());
+    for (std::size_t b = 0; b < boxes.size(); ++b) {
+      ranges[b] = cellsOf(boxes[b]);
+      forEachCell(ranges[b], [&](long long c) { ++start[c]; });
+    }
     for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
     bucketed.resize(start.back());
-    forEachBox(lines, [&](const SegmentBox& box) {
-      forEachCell(box, [&](long long c) { bucketed[--start[c]] = box; });
-    });
+    for (std::size_t b = 0; b < boxes.size(); ++b) {
+      forEachCell(ranges[b], [&](long long c) { bucketed[--start[c]] = boxes[b]; });
+    }
     for (std::size_t c = 0; c + 1 < start.size(); ++c) {
       if (start[c + 1] - start[c] < 2) continue;
       std::sort(bucketed.begin() + start[c], bucketed.begin() + start[c + 1],
@@ -147,6 +156,8 @@ Point2 crossingPoint(const std::vector<Polyline>& lines, const Crossing& crossin
 }
 
 struct CrossingFinder::Buckets {
+  std::vector<SegmentBox> boxes;
+  std::vector<CellRange> ranges;
   std::vector<SegmentBox> bucketed;
   std::vector<int> start;
 };
@@ -163,7 +174,8 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Polyline>& lines, d
   for (std::size_t l = 0; l < lines.size(); ++l) {
     closed[l] = lines[l].size() > 1 && (lines[l].front() - lines[l].back()).norm() < 1e-9;
   }
-  const SegmentGrid grid(lines, cell, buckets_->bucketed, buckets_->start);
+  const SegmentGrid grid(lines, cell, buckets_->boxes, buckets_->ranges, buckets_->bucketed,
+                         buckets_->start);
   std::vector<Crossing> crossings;
   for (long long c = 0; c + 1 < static_cast<long long>(grid.start.size()); ++c) {
     for (int a = grid.start[c]; a < grid.start[c + 1]; ++a) {

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 
 #include "vicc_glyphs/bspline/knot_insertion.hpp"
@@ -73,6 +74,44 @@ TEST(KnotInsertionTest, RaisingAllMultiplicitiesToTheDegreeKeepsTheCurve) {
     for (double u : curve.breakpoints()) EXPECT_GE(bezier.multiplicity(u), 3) << u;
     EXPECT_LT(maxDeviation(curve, bezier), 1e-9);
   }
+}
+
+// A clamped cubic of 400 de Boor points on a wavy path, knots 0, 1, ..., 396 inside.
+BSplineCurve longCurve() {
+  std::vector<double> knots(4, 0.0);
+  for (int k = 1; k < 397; ++k) knots.push_back(k);
+  knots.insert(knots.end(), 4, 397.0);
+  std::vector<Point2> points;
+  for (int i = 0; i < 400; ++i) points.emplace_back(i, 3.0 * std::sin(0.7 * i) + (i % 3));
+  return BSplineCurve(3, knots, points);
+}
+
+// The splice cuts a long wave at many places at once (insertKnots on the whole list): each
+// insertion must act on the refinement so far, also where the Boehm windows of neighbouring
+// values overlap and where a value arrives out of order.
+TEST(KnotInsertionTest, ManyInsertionsIntoALongCurveAreEachCountedAndKeepTheCurve) {
+  const BSplineCurve curve = longCurve();
+  std::vector<double> values;
+  for (int k = 0; k < 60; ++k) {
+    const double u = 390.3 - 6.5 * k;  // decreasing: every insertion lands before the last
+    values.insert(values.end(), {u, u, u + 0.25});
+  }
+  values.insert(values.end(), {200.0, 0.5, 200.0});  // a knot raised to 3; the first span
+  const BSplineCurve refined = insertKnots(curve, values);
+  EXPECT_EQ(refined.controlPointCount(), curve.controlPointCount() + values.size());
+  EXPECT_EQ(refined.knots().size(), curve.knots().size() + values.size());
+  EXPECT_EQ(refined.multiplicity(390.3), 2);
+  EXPECT_EQ(refined.multiplicity(390.55), 1);
+  EXPECT_EQ(refined.multiplicity(200.0), 3);
+  EXPECT_EQ(refined.multiplicity(0.5), 1);
+  EXPECT_LT(maxDeviation(curve, refined), 1e-9);
+  // One value at a time gives the same curve, bit for bit.
+  BSplineCurve stepwise = curve;
+  for (double u : values) stepwise = insertKnot(stepwise, u);
+  EXPECT_EQ(stepwise.knots(), refined.knots());
+  EXPECT_EQ(stepwise.controlPoints(), refined.controlPoints());
+  // The multiplicity is checked against the refinement so far.
+  EXPECT_THROW(insertKnots(curve, {150.5, 150.5, 150.5, 150.5}), std::invalid_argument);
 }
 
 TEST(KnotInsertionTest, RejectsKnotsOutsideTheDomainOrAboveTheAllowedMultiplicity) {

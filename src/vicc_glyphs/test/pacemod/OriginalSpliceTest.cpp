@@ -69,6 +69,40 @@ TEST(OriginalSpliceTest, TheRunIsTheOriginalAndTheRestTheWave) {
   EXPECT_THROW(spliceOriginal(wave, original, table, {{10, 40}}), std::invalid_argument);
 }
 
+// A wave of 240 pieces over a straight original from (0, 0) to (240, 0), flat (on the
+// original) over 40 runs: the splice cuts it at 80 places in one pass.
+TEST(OriginalSpliceTest, ManyRunsOnALongWaveEachBecomeTheOriginal) {
+  const BSplineCurve original(3, {0, 0, 0, 0, 1, 1, 1, 1}, {{0, 0}, {80, 0}, {160, 0}, {240, 0}});
+  const bspline::ArcLengthTable table(original, 4096);
+  std::vector<double> knots(4, 0.0);
+  std::vector<Point2> points{{0, 0}};
+  for (int k = 1; k <= 240; ++k) {  // a C0 tooth of height 1 per unit of length
+    const double x0 = k - 1;
+    points.insert(points.end(), {{x0 + 1.0 / 3, 1}, {x0 + 2.0 / 3, 1}, {x0 + 1, 0}});
+    knots.insert(knots.end(), 3, static_cast<double>(k));
+  }
+  knots.back() = 240.0;
+  knots.push_back(240.0);
+  const BSplineCurve wave(3, knots, points);
+  std::vector<ArcInterval> runs;
+  for (int r = 0; r < 40; ++r) runs.push_back({6.0 * r + 1.25, 6.0 * r + 3.75});
+  const BSplineCurve spliced = spliceOriginal(wave, original, table, runs);
+  for (const ArcInterval& run : runs) {
+    for (double t : {0.0, 0.3, 0.5, 1.0}) {
+      const double u = run.begin + t * (run.end - run.begin);
+      EXPECT_NEAR(spliced.pointAt(u).y(), 0.0, 1e-9) << u;
+      EXPECT_NEAR(spliced.pointAt(u).x(), u, 1e-6) << u;
+    }
+    EXPECT_EQ(spliced.multiplicity(run.begin), 3) << run.begin;
+    EXPECT_EQ(spliced.multiplicity(run.end), 3) << run.end;
+  }
+  for (int r = 0; r < 40; ++r) {  // between the runs: the wave's teeth
+    for (double u : {6.0 * r + 0.5, 6.0 * r + 4.5, 6.0 * r + 5.5}) {
+      EXPECT_NEAR((spliced.pointAt(u) - wave.pointAt(u)).norm(), 0.0, 1e-9) << u;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pacemod
 }  // namespace vicc_glyphs
