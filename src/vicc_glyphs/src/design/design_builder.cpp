@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <set>
+#include <string>
 #include <utility>
 
 #include "gradient_channels.hpp"
@@ -24,6 +26,7 @@ using perception::VisualVariable;
 struct Active {
   const Encoding* encoding;
   int level;
+  const std::string* variable;  ///< the name of the variable that drives it (for errors)
 };
 
 // Colours that match the one a design replaces (8-bit colours / 255 from the importers).
@@ -33,10 +36,16 @@ double pixelsPerMm(const DiffusionCurveImage& image, const GlyphDesign& design) 
   return image.width / design.size_mm;
 }
 
-void replaceColor(std::vector<ColorPoint>& points, const Color& from, const Color& to) {
+// Returns how many colour points it replaced.
+int replaceColor(std::vector<ColorPoint>& points, const Color& from, const Color& to) {
+  int replaced = 0;
   for (ColorPoint& point : points) {
-    if ((point.rgb - from).cwiseAbs().maxCoeff() <= kColorTolerance) point.rgb = to;
+    if ((point.rgb - from).cwiseAbs().maxCoeff() <= kColorTolerance) {
+      point.rgb = to;
+      ++replaced;
+    }
   }
+  return replaced;
 }
 
 // The colour that covers most of one side of a curve (colour points are piecewise linear in
@@ -91,16 +100,29 @@ void releaseNeighbourColors(DiffusionCurveImage& image, const std::set<int>& rel
 
 // A fill-colour change: the selected curves on both sides, the others' outer sides, where
 // they recorded the recoloured region as their neighbour (a region of the same colour that is
-// not selected keeps its own fill).
+// not selected keeps its own fill). A colour to replace that the selected curves do not have
+// would leave every level looking the same: an error naming the encoding's key.
 void recolorRegion(DiffusionCurveImage& image, const std::vector<int>& curves, const Color& from,
-                   const Color& to) {
+                   const Color& to, const std::string& where) {
+  int selected_points = 0;
   for (size_t index = 0; index < image.curves.size(); ++index) {
     DiffusionCurve& curve = image.curves[index];
     const bool selected =
         std::find(curves.begin(), curves.end(), static_cast<int>(index)) != curves.end();
     const bool left_inside = enclosedSideIsLeft(curve);
-    if (selected || !left_inside) replaceColor(curve.left_colors, from, to);
-    if (selected || left_inside) replaceColor(curve.right_colors, from, to);
+    int replaced = 0;
+    if (selected || !left_inside) replaced += replaceColor(curve.left_colors, from, to);
+    if (selected || left_inside) replaced += replaceColor(curve.right_colors, from, to);
+    if (selected) selected_points += replaced;
+  }
+  if (selected_points == 0) {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "%02x%02x%02x", static_cast<int>(std::lround(from[0] * 255)),
+                  static_cast<int>(std::lround(from[1] * 255)),
+                  static_cast<int>(std::lround(from[2] * 255)));
+    throw DesignError(where + ": the colour to replace, " + hex +
+                      ", is not on the selected curves of the icon, so every level would look "
+                      "the same");
   }
 }
 
@@ -290,7 +312,9 @@ std::vector<Active> activeEncodings(const GlyphDesign& design, const std::vector
       throw DesignValueError(variable.name + ": level " + std::to_string(levels[v]) +
                              " out of range");
     }
-    for (const Encoding& encoding : variable.encodings) active.push_back({&encoding, levels[v]});
+    for (const Encoding& encoding : variable.encodings) {
+      active.push_back({&encoding, levels[v], &variable.name});
+    }
   }
   return active;
 }
@@ -338,7 +362,8 @@ DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>
     const std::vector<int> curves = pacemod::selectCurves(image, a.encoding->curves);
     const size_t level = static_cast<size_t>(a.level);
     if (a.encoding->channel == Channel::FillColor) {
-      recolorRegion(image, curves, a.encoding->replace, a.encoding->colors[level]);
+      recolorRegion(image, curves, a.encoding->replace, a.encoding->colors[level],
+                    "variable " + *a.variable + ", fill_color encoding (replace)");
     } else if (a.encoding->channel == Channel::GlyphScale) {
       scaleAboutCentre(image, curves, a.encoding->numbers[level]);
     }

@@ -63,6 +63,26 @@ void readModelLevels(const YamlMap& map, Encoding& encoding, VisualVariable vari
   }
 }
 
+// The fixed amplitude of a geometric_frequency encoding: waves flatter than the model's
+// smallest geometric amplitude at the glyph's size show no frequency, so that every level
+// would look the same.
+void requirePerceptibleAmplitude(const YamlMap& map, double amplitude_mm, double size_mm,
+                                 const PerceptionModel& model) {
+  double smallest = 0.0;
+  try {
+    smallest = model.levels(VisualVariable::GeometricAmplitude, size_mm).range_low;
+  } catch (const std::exception& e) {
+    throw DesignError(map.key("amplitude_mm") + ": " + e.what());
+  }
+  if (!(amplitude_mm >= smallest * (1.0 - 1e-9))) {
+    std::ostringstream message;
+    message << map.key("amplitude_mm") << " = " << amplitude_mm
+            << " mm is below the smallest perceptible geometric amplitude of a " << size_mm
+            << " mm glyph, " << smallest << " mm: the waves would show no frequency";
+    throw DesignError(message.str());
+  }
+}
+
 void readHidden(const YamlMap& map, Encoding& encoding, int levels) {
   const YAML::Node hidden = map.node("hidden");
   if (!hidden.IsSequence()) throw DesignError(map.key("hidden") + " must be a list of lists");
@@ -131,6 +151,9 @@ Encoding readEncoding(const YAML::Node& node, const std::string& path, int level
   encoding.amplitude_mm = map.number("amplitude_mm", encoding.amplitude_mm);
   encoding.waves_per_10mm = map.number("waves_per_10mm", encoding.waves_per_10mm);
   if (!(encoding.amplitude_mm >= 0.0)) throw DesignError(map.key("amplitude_mm") + " must be >= 0");
+  if (encoding.channel == Channel::GeometricFrequency) {
+    requirePerceptibleAmplitude(map, encoding.amplitude_mm, size_mm, model);
+  }
   if (!(encoding.waves_per_10mm > 0.0))
     throw DesignError(map.key("waves_per_10mm") + " must be > 0");
   if (map.has("dash_color")) encoding.dash_color = map.color("dash_color");
@@ -227,7 +250,10 @@ GlyphDesign readDesign(const YAML::Node& root, const std::string& base_dir,
   design.size_mm = map.number("size_mm", design.size_mm);
   if (!(design.size_mm > 0.0)) throw DesignError("size_mm must be > 0");
   design.size_px = map.integer("size_px", design.size_px);
-  if (design.size_px < 16 || design.size_px > 4096) throw DesignError("size_px must be 16..4096");
+  if (design.size_px < kMinGlyphPixels || design.size_px > kMaxGlyphPixels) {
+    throw DesignError("size_px must be " + std::to_string(kMinGlyphPixels) + ".." +
+                      std::to_string(kMaxGlyphPixels));
+  }
   if (map.has("background")) design.background = map.color("background");
   const YAML::Node variables = map.node("variables");
   if (!variables.IsSequence() || variables.size() == 0) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "orzan_conventions.hpp"
 #include "text_file.hpp"
@@ -67,6 +68,17 @@ class OrzanReader {
     curve.right_colors = readColors(file_right, "right_color", segments, place);
     curve.left_emits = !isBarrier(file_left);
     curve.right_emits = !isBarrier(file_right);
+    // An emitting side without colour points would diffuse an arbitrary colour (black).
+    for (const auto& [emits, colors, name] :
+         {std::tuple{curve.left_emits, &curve.left_colors, "left_colors_set"},
+          std::tuple{curve.right_emits, &curve.right_colors, "right_colors_set"}}) {
+      if (emits && colors->empty()) {
+        throw FormatError(source_, place,
+                          std::string(name) +
+                              " has no colour points; give at least one or mark the side a "
+                              "barrier (boundary=\"Neumann\")");
+      }
+    }
     checkDeclaredCount(element, "nb_left_colors", curve.left_colors.size(), place);
     checkDeclaredCount(element, "nb_right_colors", curve.right_colors.size(), place);
     if (const XMLElement* blur = element.FirstChildElement("blur_points_set")) {

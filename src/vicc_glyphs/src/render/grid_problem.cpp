@@ -98,6 +98,7 @@ void fixUnreachedPixels(GridProblem& problem, const std::vector<double>& backgro
 void resetProblem(GridProblem& problem, int width, int height, int channels) {
   problem.width = std::max(width, 0);
   problem.height = std::max(height, 0);
+  problem.curve_pixels = 0;
   problem.channels = channels;
   const int n = problem.pixelCount();
   for (auto* flags : {&problem.couples_right, &problem.couples_down, &problem.fixed}) {
@@ -161,6 +162,7 @@ void assembleGridProblem(const DiffusionCurveImage& image, double scale, const S
   for (int p = 0; p < n; ++p) {
     if (counts[p] == 0) continue;
     problem.fixed[p] = 1;
+    ++problem.curve_pixels;
     const float share = 1.0f / static_cast<float>(counts[p]);
     for (int c = 0; c < channels; ++c) problem.values[p * channels + c] *= share;
   }

@@ -40,6 +40,7 @@ using PixelValue = std::conditional_t<C == 3, Float4, float>;
 struct FineProgress {
   int iterations = 0;
   bool converged = false;
+  bool at_float_resolution = false;
   std::vector<double> residuals, error_estimates, updates;
 };
 
@@ -125,6 +126,7 @@ class Multigrid {
       report->levels = levelCount();
       report->fine_cycles = progress.iterations;
       report->converged = progress.converged;
+      report->stopped_at_float_resolution = progress.at_float_resolution;
       report->residuals = std::move(progress.residuals);
       report->error_estimates = std::move(progress.error_estimates);
       report->updates = std::move(progress.updates);
@@ -192,6 +194,12 @@ class Multigrid {
   }
 
   // num / den per channel; 0 where den is not positive (a channel already solved exactly).
+  static double largestChannel(const Px& value) {
+    double most = 0.0;
+    for (int c = 0; c < C; ++c) most = std::max(most, static_cast<double>(channel(value, c)));
+    return most;
+  }
+
   static Px ratio(const Sum& num, const Sum& den) {
     Px out{};
     for (int c = 0; c < C; ++c) {
@@ -345,6 +353,13 @@ class Multigrid {
       const Px beta = restart ? Px{} : ratio(rz, rz_previous);
       rz_previous = rz;
       const Px alpha = ratio(rz, updateDirection(beta, restart, largest));
+      // A fixed count: once the V-cycle's correction is below float resolution, further steps
+      // change no pixel but lose CG's orthogonality in float arithmetic, and the iterate then
+      // drifts away again (virus, 100 cycles: residual 2e-13 after 9, grey blocks after 100).
+      if (!until_converged && largestChannel(largest) < kFloatResolution) {
+        progress.at_float_resolution = true;
+        break;
+      }
       // Deflated, the correction's largest magnitude is known only now (the last direction is
       // then computed in vain).
       if (deflating_ && stops(errorEstimate(largest), last, projected, progress)) break;
@@ -1095,6 +1110,8 @@ class Multigrid {
   // have 0.01-0.3, the rest of a converging start below 1e-3; the iteration counts of the
   // bench inputs were the same from 5e-4 to 5e-3) seeds a square of this radius; at most
   // one seed per this many free pixels.
+  // Colour units: a few float ulps at 1, far below an 8-bit step (1/255).
+  static constexpr double kFloatResolution = 1e-6;
   static constexpr float kLocalRelaxationResidual = 2e-3f;
   static constexpr int kLocalRelaxationRadius = 2;
   static constexpr size_t kMaxSeedShare = 16;

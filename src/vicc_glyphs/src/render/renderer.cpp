@@ -122,6 +122,7 @@ void DiffusionCurveRenderer::render(const DiffusionCurveImage& input, const Rend
 
   Clock::time_point phase = Clock::now();
   w.assembler.assembleColor(image, image.width, image.height, 1.0, options.background, w.problem);
+  result.report.curve_pixels = w.problem.curve_pixels;
   result.report.timings.assemble_ms = millisecondsSince(phase);
 
   phase = Clock::now();
@@ -150,6 +151,14 @@ void DiffusionCurveRenderer::render(const DiffusionCurveImage& input, const Rend
     result.report.timings.blur_ms = millisecondsSince(phase);
   }
   result.report.timings.total_ms = millisecondsSince(start);
+}
+
+void requireSomethingDrawn(const RenderReport& report, const std::string& what) {
+  if (report.curve_pixels > 0) return;
+  throw std::runtime_error(what +
+                           ": nothing to draw: no curve with colours reaches the image (no "
+                           "curves, curves outside the frame or without colour points, or a "
+                           "picture too small for them), which would be only the background");
 }
 
 RenderResult renderDiffusionCurves(const DiffusionCurveImage& image, const RenderOptions& options) {

@@ -16,8 +16,12 @@
 namespace vicc_glyphs::ros_glyph {
 namespace {
 
-constexpr int kMaxSize = 4096;
 constexpr std::size_t kMaxIconSizes = 8;  // imported icons kept per design
+// The cache's pixels: ~cache_size glyphs of 4096 px would be 3 GB.
+constexpr std::size_t kMaxCacheBytes = std::size_t{256} << 20;
+// After a glyph wider than this the renderer's buffers (80 bytes per pixel and more) are
+// freed: one 4096 px request would otherwise keep 2.8 GB resident for good.
+constexpr int kKeptBufferSize = 1024;
 
 /// share/vicc_glyphs/<relative> of the devel or install space that holds this library.
 std::string packageFile(const std::string& relative) {
@@ -61,7 +65,15 @@ GlyphServer::GlyphServer(ros::NodeHandle nh, ros::NodeHandle private_nh)
   }
   for (const auto& file : std::filesystem::directory_iterator(parameters_.designs_dir)) {
     if (file.path().extension() != ".yaml") continue;
-    designs_[file.path().stem().string()].design = design::loadDesign(file.path().string(), model_);
+    const std::string stem = file.path().stem().string();
+    design::GlyphDesign loaded = design::loadDesign(file.path().string(), model_);
+    // Requests name the file; a different name inside would make the answers and the cache
+    // (keyed by name) mix up two designs.
+    if (loaded.name != stem) {
+      throw std::runtime_error("design " + file.path().string() + " is named '" + loaded.name +
+                               "': a design's name must be its file name (" + stem + ")");
+    }
+    designs_[stem].design = std::move(loaded);
   }
   if (designs_.empty()) {
     throw std::runtime_error("parameter ~designs_dir: no design (.yaml) in " +
@@ -134,7 +146,9 @@ cv::Mat GlyphServer::renderCached(DesignEntry& entry, const std::vector<int>& le
   RenderOptions options;
   options.background = entry.design.background;
   RenderResult result;
-  renderer_.render(image, options, result);
+  renderer_->render(image, options, result);
+  if (image.width > kKeptBufferSize) renderer_ = std::make_unique<DiffusionCurveRenderer>();
+  requireSomethingDrawn(result.report, "size " + std::to_string(size) + " px");
   if (!result.report.multigrid.converged) {
     ROS_WARN("glyph_server: design '%s': the diffusion did not reach its error tolerance %g",
              entry.design.name.c_str(), options.multigrid.tolerance);
@@ -142,7 +156,12 @@ cv::Mat GlyphServer::renderCached(DesignEntry& entry, const std::vector<int>& le
   cv::Mat rgb8 = toRgb8(result.image);
   cache_[key] = rgb8;
   cache_order_.push_back(key);
-  while (static_cast<int>(cache_order_.size()) > parameters_.cache_size) {
+  cache_bytes_ += rgb8.total() * rgb8.elemSize();
+  // The newest stays even if it alone exceeds the bytes (it is the answer to this request).
+  while (static_cast<int>(cache_order_.size()) > parameters_.cache_size ||
+         (cache_bytes_ > kMaxCacheBytes && cache_order_.size() > 1)) {
+    const cv::Mat& oldest = cache_.at(cache_order_.front());
+    cache_bytes_ -= oldest.total() * oldest.elemSize();
     cache_.erase(cache_order_.front());
     cache_order_.pop_front();
   }
@@ -162,8 +181,12 @@ bool GlyphServer::render(vicc_msgs::RenderGlyph::Request& request,
     response.message = "names and values differ in number";
     return true;
   }
-  if (request.size < 0 || request.size > kMaxSize) {
-    response.message = "size must be 0 (design default) to " + std::to_string(kMaxSize);
+  if (request.size != 0 &&
+      (request.size < design::kMinGlyphPixels || request.size > design::kMaxGlyphPixels)) {
+    response.message = "size must be 0 (the design's default) or " +
+                       std::to_string(design::kMinGlyphPixels) + " to " +
+                       std::to_string(design::kMaxGlyphPixels) + " pixels, got " +
+                       std::to_string(request.size);
     return true;
   }
   try {

@@ -48,7 +48,8 @@ int runDesignCommand(const std::vector<std::string>& args, std::ostream& out, st
     output = parsed.value("out");
     if (values.empty()) throw UsageError("missing --values K=V,...");
     if (output.empty()) throw UsageError("missing --out OUT.png");
-    if (parsed.has("size")) size = parseInteger("size", parsed.value("size"), 16, 4096);
+    if (parsed.has("size")) size = parseInteger("size", parsed.value("size"), design::kMinGlyphPixels,
+                                                   design::kMaxGlyphPixels);
     if (parsed.has("model")) model_path = parsed.value("model");
     dci = parsed.value("dci");
   } catch (const UsageError& e) {
@@ -61,10 +62,12 @@ int runDesignCommand(const std::vector<std::string>& args, std::ostream& out, st
     const design::GlyphDesign glyph = design::loadDesign(design_path, model);
     const std::vector<int> levels = glyph.levelsFor(design::parseValueList(values));
     const DiffusionCurveImage image = design::buildGlyph(glyph, levels, model, size);
-    if (!dci.empty()) writeOrzanXml(image, dci);
     RenderOptions options;
     options.background = glyph.background;
-    writePng(renderDiffusionCurves(image, options).image, output);
+    const RenderResult result = renderDiffusionCurves(image, options);
+    requireSomethingDrawn(result.report, glyph.name);
+    if (!dci.empty()) writeOrzanXml(image, dci);
+    writePng(result.image, output);
   } catch (const design::DesignValueError& e) {
     err << "vicc_glyph design: " << e.what() << "\n";
     return 2;

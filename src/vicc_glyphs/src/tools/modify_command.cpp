@@ -82,9 +82,10 @@ int runModifyCommand(const std::vector<std::string>& args, std::ostream& out, st
     warnSkipped(outcome.dashes, "dashes", err);
     const std::string problem = validate(image);
     if (!problem.empty()) throw std::runtime_error("modified image is invalid: " + problem);
-    if (!request.dci.empty()) writeOrzanXml(image, request.dci);
     RenderResult result;
     DiffusionCurveRenderer().render(image, RenderOptions{}, result);
+    requireSomethingDrawn(result.report, request.input);
+    if (!request.dci.empty()) writeOrzanXml(image, request.dci);
     outcome.render_ms = result.report.timings.total_ms;
     writePng(result.image, request.output);
     if (!request.report.empty()) writeReport(request, outcome);

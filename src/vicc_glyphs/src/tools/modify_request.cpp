@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "vicc_glyphs/design/glyph_design.hpp"
+
 namespace vicc_glyphs::tools {
 namespace {
 
@@ -105,7 +107,9 @@ ModifyRequest parseModifyRequest(const std::vector<std::string>& args) {
   if (request.output.empty()) throw UsageError("missing --out OUT.png");
   request.dci = parsed.value("dci");
   request.report = parsed.value("report");
-  if (parsed.has("size")) request.size = parseInteger("size", parsed.value("size"), 1, kMaxSize);
+  if (parsed.has("size")) {
+    request.size = parseInteger("size", parsed.value("size"), design::kMinGlyphPixels, kMaxSize);
+  }
   if (parsed.has("size-mm")) {
     request.size_mm = parseNumber("size-mm", parsed.value("size-mm"), false, false);
   }

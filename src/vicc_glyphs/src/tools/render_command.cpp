@@ -23,7 +23,9 @@ const std::vector<OptionSpec>& renderOptions() {
       {"tolerance", "E",
        "iterate until the estimated largest colour error (0..1) is at most E (default "
        "0.002, at most 50 iterations)"},
-      {"cycles", "N", "instead: exactly N iterations (V-cycles) on the finest grid"},
+      {"cycles", "N",
+       "instead: N iterations (V-cycles) on the finest grid (fewer once the correction is "
+       "below float resolution)"},
       {"color", "RRGGBB", "SVG: the colour of currentColor (default 000000, black)"},
       {"lenient", "", "SVG: unsupported features become warnings and are left out"},
       {"stroke-outliner", "clipper|curves",
@@ -53,7 +55,11 @@ void printReport(const RenderResult& result, std::ostream& out) {
       << t.solve_ms << ", antialias " << t.antialias_ms << ", blur " << t.blur_ms << "\n"
       << "multigrid: " << report.multigrid.levels << " levels, " << report.multigrid.fine_cycles
       << " CG iterations (V-cycles) on the finest grid"
-      << (report.multigrid.converged ? " (error tolerance reached)" : "") << "\n"
+      << (report.multigrid.converged ? " (error tolerance reached)" : "")
+      << (report.multigrid.stopped_at_float_resolution
+              ? " (stopped before the count: the correction fell below float resolution)"
+              : "")
+      << "\n"
       << std::scientific << std::setprecision(3);
   const MultigridReport& m = report.multigrid;
   for (size_t k = 0; k < m.residuals.size(); ++k) {
@@ -140,9 +146,10 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
 
   try {
     const DiffusionCurveImage image = loadDiffusionCurves(input, size, svg);
-    if (!dci.empty()) writeOrzanXml(image, dci);
     RenderResult result;
     DiffusionCurveRenderer().render(image, options, result);
+    requireSomethingDrawn(result.report, input);
+    if (!dci.empty()) writeOrzanXml(image, dci);
     writePng(result.image, output);
     const MultigridOptions& solver = options.multigrid;
     if (solver.tolerance > 0.0 && !result.report.multigrid.converged) {

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "direct_reference_solve.hpp"
@@ -115,8 +117,34 @@ TEST(MultigridTest, ErrorEstimateKeepsFallingWithBarriersAndOpenCurveEnds) {
   // Curve ends and barrier tips are where the coarse grids see the geometry least well.
   const MultigridReport report = fixedIterations(iconLikeImage(256, 256), 6);
   const std::vector<double>& e = report.error_estimates;
-  ASSERT_EQ(e.size(), 6u);
+  ASSERT_GE(e.size(), 4u);
+  // Fewer than the 6 asked for only where the correction fell below float resolution.
+  if (e.size() < 6u) {
+    EXPECT_TRUE(report.stopped_at_float_resolution);
+  }
   for (size_t k = 1; k < e.size(); ++k) EXPECT_LT(e[k], 0.5 * e[k - 1]) << "iteration " << k;
+}
+
+// Far more iterations than float arithmetic can use: CG used to run on past machine precision,
+// lose its orthogonality and drift away again (the virus icon, 100 cycles: grey blocks up to
+// 11/255 in its white background). It stops once the correction is below float resolution.
+TEST(MultigridTest, AFixedCountStopsAtFloatResolutionInsteadOfDrifting) {
+  const GridProblem problem = colorProblem(iconLikeImage(256, 256));
+  MultigridOptions many;
+  many.tolerance = 0.0;
+  many.fine_cycles = 100;
+  MultigridReport report;
+  const std::vector<float> solved = solveMultigrid(problem, many, &report);
+  EXPECT_TRUE(report.stopped_at_float_resolution);
+  EXPECT_LT(report.fine_cycles, 20);
+  EXPECT_LT(meanAbsoluteError(solved, solveDirect(problem)), 1e-5);
+  MultigridOptions tight;  // the default tolerance's answer, to 8-bit precision
+  const std::vector<float> reference = solveMultigrid(problem, tight, nullptr);
+  float largest = 0.0f;
+  for (size_t i = 0; i < solved.size(); ++i) {
+    largest = std::max(largest, std::abs(solved[i] - reference[i]));
+  }
+  EXPECT_LT(largest, 1.0f / 255.0f);
 }
 
 TEST(MultigridTest, RejectsInconsistentProblemsAndOptions) {

@@ -75,6 +75,12 @@ struct DesignVariable {
   int levelCount() const { return static_cast<int>(edges.size()) + 1; }
 };
 
+/// Glyph widths in pixels that designs, `vicc_glyph modify` and the glyph server accept: below
+/// 16 px a glyph's waves, dashes and levels cannot be told apart (a wave period of the
+/// perception model's range would be a fraction of a pixel).
+constexpr int kMinGlyphPixels = 16;
+constexpr int kMaxGlyphPixels = 4096;
+
 struct GlyphDesign {
   std::string name;
   std::string description;

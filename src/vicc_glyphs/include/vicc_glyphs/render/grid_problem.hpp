@@ -29,6 +29,9 @@ struct GridProblem {
   std::vector<std::uint8_t> fixed;          ///< 1 = Dirichlet pixel
   /// Dirichlet values, pixel-major (values[pixel * channels + channel]); 0 at free pixels.
   std::vector<float> values;
+  /// Dirichlet pixels that take their value from a curve (the others took the background):
+  /// 0 means that no curve with colours reaches the grid and the picture is the background.
+  int curve_pixels = 0;
 
   int pixelCount() const { return width * height; }
   float value(int channel, int pixel) const { return values[pixel * channels + channel]; }

@@ -58,7 +58,8 @@ struct MultigridOptions {
   /// iterations, whatever the error.
   double tolerance = kDefaultTolerance;
   int max_fine_cycles = 50;
-  int fine_cycles = 2;  ///< iterations on the finest level when tolerance is 0
+  int fine_cycles = 2;  ///< iterations on the finest level when tolerance is 0 (fewer once
+                        ///< the correction is below float resolution)
 
   /// About half an 8-bit colour step (1/510); see docs/rendering.md for how the true error
   /// compares.
@@ -72,6 +73,10 @@ struct MultigridReport {
   int fine_cycles = 0;  ///< CG iterations (one V-cycle each) done on the finest level
   /// With a tolerance: whether the error estimate reached it within max_fine_cycles.
   bool converged = false;
+  /// Without a tolerance (fine_cycles): whether the iterations stopped before that count
+  /// because the V-cycle's correction fell below float resolution (1e-6): further ones change
+  /// no pixel, and in float arithmetic CG would drift away again.
+  bool stopped_at_float_resolution = false;
   /// Over the finest level's free pixels and all channels: RMS residual (entry 0 at the FMG
   /// start, entry k after iteration k) and RMS update of iteration k+1 (entry k), with
   /// record_residuals only (they cost arithmetic in the CG's passes); error estimate (largest

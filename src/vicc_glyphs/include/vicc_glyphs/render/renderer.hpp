@@ -5,6 +5,7 @@
 // pass.
 
 #include <memory>
+#include <string>
 #include <opencv2/core.hpp>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
@@ -36,7 +37,15 @@ struct RenderReport {
   MultigridReport multigrid;
   RenderTimings timings;
   bool blurred = false;
+  /// Pixels whose colour a curve set (GridProblem::curve_pixels); 0: the picture is only the
+  /// background, which tools must not pass off as a rendering (see requireSomethingDrawn).
+  int curve_pixels = 0;
 };
+
+/// Throws std::runtime_error naming `what` when `report` says that no curve with colours
+/// reached the image (a uniform background picture: an empty or unreadable input, curves
+/// outside the frame or without colours, a glyph too small to cross a pixel).
+void requireSomethingDrawn(const RenderReport& report, const std::string& what);
 
 struct RenderResult {
   cv::Mat image;     ///< CV_32FC3, RGB in [0, 1]: the final picture

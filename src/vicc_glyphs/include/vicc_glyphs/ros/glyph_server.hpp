@@ -96,8 +96,11 @@ class GlyphServer {
   std::map<std::string, DesignEntry> designs_;
   image_transport::ImageTransport transport_;
   ros::ServiceServer service_;
-  DiffusionCurveRenderer renderer_;  // one renderer, reused: it keeps its buffers
+  /// One renderer, reused: it keeps its buffers (replaced after a large glyph, see
+  /// kKeptBufferSize).
+  std::unique_ptr<DiffusionCurveRenderer> renderer_ = std::make_unique<DiffusionCurveRenderer>();
   std::map<CacheKey, cv::Mat> cache_;
+  std::size_t cache_bytes_ = 0;  ///< pixels of the cached glyphs
   std::list<CacheKey> cache_order_;  // oldest first
   std::mutex mutex_;
 };
