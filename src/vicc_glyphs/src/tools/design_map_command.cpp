@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
@@ -18,13 +19,18 @@ namespace vicc_glyphs::tools {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr int kMaxMapSide = 8192;  // the --width limit; also the map height's
+constexpr int kLabelRoom = 20;     // below the bottom glyphs' labels
+// Glyph centres closer than this many glyph widths overlay into an unreadable mix.
+constexpr double kOverlapFraction = 0.5;
+constexpr size_t kMaxOverlapWarnings = 10;
 
 const std::vector<OptionSpec>& mapOptions() {
   static const std::vector<OptionSpec> specs{
       {"table", "ROWS.csv", "header label,lon,lat,<design variables...> (required)"},
       {"out", "MAP.png", "PNG to write (required)"},
-      {"glyph-size", "PX", "glyph width in pixels (default 96)"},
-      {"width", "PX", "map width in pixels (default 900)"},
+      {"glyph-size", "PX", "glyph width in pixels, 16..1024 (default 96)"},
+      {"width", "PX", "map width in pixels, 3 x glyph-size..8192 (default 900)"},
       {"model", "MODEL.yaml", "perception model (default: config/perception_model.yaml)"},
       {"help", "", "show this help"},
   };
@@ -34,24 +40,44 @@ const std::vector<OptionSpec>& mapOptions() {
 void printUsage(std::ostream& out) {
   out << "usage: vicc_glyph design-map DESIGN.yaml --table ROWS.csv --out MAP.png\n"
          "                            [--glyph-size PX] [--width PX] [--model MODEL.yaml]\n\n"
-         "Renders one glyph per table row, placed by longitude/latitude, labelled.\n\n"
+         "Renders one glyph per table row, placed by longitude/latitude, labelled.\n"
+         "The table's header is label,lon,lat and then every variable of the design, each\n"
+         "once; lon is in [-180, 180], lat in [-90, 90] degrees; CRLF line ends are accepted.\n"
+         "North is up. The map is --width wide and at most 8192 pixels high: the rows' extent\n"
+         "is scaled to fit both, with one glyph size of margin; rows at one place are centred.\n"
+         "Two glyphs closer than half a glyph size are drawn, with a warning naming both.\n\n"
       << formatOptions(mapOptions());
 }
 
 struct MapRow {
+  int line = 0;
   std::string label;
   double lon = 0.0, lat = 0.0;
-  std::map<std::string, double> values;
+  std::vector<int> levels;  // one per design variable, as GlyphDesign::levelsFor returns
 };
+
+std::string lineName(const std::string& path, int line) {
+  return path + ": line " + std::to_string(line);
+}
+
+// A line without its CRLF (Windows) '\r'.
+bool readLine(std::istream& in, std::string& line) {
+  if (!std::getline(in, line)) return false;
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  return true;
+}
 
 std::vector<std::string> splitCsv(const std::string& line) {
   std::vector<std::string> fields;
   std::stringstream stream(line);
   for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
+  if (!line.empty() && line.back() == ',') fields.emplace_back();  // a trailing empty cell
   return fields;
 }
 
-double cellNumber(const std::string& text, int line, const std::string& column) {
+// A finite number in [low, high]; the error names the line and the column.
+double cellNumber(const std::string& text, const std::string& where, const std::string& column,
+                  double low = -HUGE_VAL, double high = HUGE_VAL) {
   size_t used = 0;
   double value = NAN;
   try {
@@ -59,60 +85,146 @@ double cellNumber(const std::string& text, int line, const std::string& column) 
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used == 0 || used != text.size()) {
-    throw std::runtime_error("line " + std::to_string(line) + ": " + column + " = '" + text +
-                             "' is not a number");
+  const std::string cell = where + ", column " + column + ": '" + text + "'";
+  if (used == 0 || used != text.size()) throw std::runtime_error(cell + " is not a number");
+  if (!std::isfinite(value)) throw std::runtime_error(cell + " is not a finite number");
+  if (value < low || value > high) {
+    std::ostringstream range;
+    range << cell << " is outside [" << low << ", " << high << "]";
+    throw std::runtime_error(range.str());
   }
   return value;
 }
 
-std::vector<MapRow> readTable(const std::string& path) {
+std::string variableNames(const design::GlyphDesign& glyph) {
+  std::string names;
+  for (const design::DesignVariable& v : glyph.variables)
+    names += (names.empty() ? "" : ", ") + v.name;
+  return names;
+}
+
+// label,lon,lat and then each of the design's variables exactly once, in any order.
+std::vector<std::string> readHeader(std::istream& file, const std::string& path,
+                                    const design::GlyphDesign& glyph) {
+  std::string line;
+  if (!readLine(file, line)) throw std::runtime_error(path + ": the table is empty");
+  if (line.size() >= 3 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);  // BOM
+  const std::vector<std::string> header = splitCsv(line);
+  if (header.size() < 3 || header[0] != "label" || header[1] != "lon" || header[2] != "lat") {
+    throw std::runtime_error(path + ": the header must start with label,lon,lat");
+  }
+  const std::string design_has = " (design " + glyph.name + " has " + variableNames(glyph) + ")";
+  for (size_t c = 0; c < header.size(); ++c) {
+    if (std::find(header.begin(), header.begin() + c, header[c]) != header.begin() + c) {
+      throw std::runtime_error(path + ": column '" + header[c] + "' appears twice in the header");
+    }
+    if (c < 3) continue;
+    const bool known = std::any_of(glyph.variables.begin(), glyph.variables.end(),
+                                   [&](const auto& v) { return v.name == header[c]; });
+    if (!known) {
+      throw std::runtime_error(path + ": column '" + header[c] +
+                               "' is not a variable of the design" + design_has);
+    }
+  }
+  for (const design::DesignVariable& v : glyph.variables) {
+    if (std::find(header.begin() + 3, header.end(), v.name) == header.end()) {
+      throw std::runtime_error(path + ": the header has no column for variable '" + v.name + "'" +
+                               design_has);
+    }
+  }
+  return header;
+}
+
+// Every row checked before any is drawn: the error names the line (and the column).
+std::vector<MapRow> readTable(const std::string& path, const design::GlyphDesign& glyph) {
   std::ifstream file(path);
   if (!file) throw std::runtime_error("cannot read table " + path);
-  std::string line;
-  std::getline(file, line);
-  const std::vector<std::string> header = splitCsv(line);
-  if (header.size() < 4 || header[0] != "label" || header[1] != "lon" || header[2] != "lat") {
-    throw std::runtime_error(path + ": header must be label,lon,lat,<variables...>");
-  }
+  const std::vector<std::string> header = readHeader(file, path, glyph);
   std::vector<MapRow> rows;
-  for (int number = 2; std::getline(file, line); ++number) {
+  std::string line;
+  for (int number = 2; readLine(file, line); ++number) {
     if (line.empty()) continue;
+    const std::string where = lineName(path, number);
     const std::vector<std::string> cells = splitCsv(line);
     if (cells.size() != header.size()) {
-      throw std::runtime_error(path + ": line " + std::to_string(number) + " has " +
-                               std::to_string(cells.size()) + " cells, the header " +
-                               std::to_string(header.size()));
+      throw std::runtime_error(where + " has " + std::to_string(cells.size()) +
+                               " cells, the header " + std::to_string(header.size()));
     }
-    MapRow row{
-        cells[0], cellNumber(cells[1], number, "lon"), cellNumber(cells[2], number, "lat"), {}};
+    MapRow row{number,
+               cells[0],
+               cellNumber(cells[1], where, "lon", -180.0, 180.0),
+               cellNumber(cells[2], where, "lat", -90.0, 90.0),
+               {}};
+    std::map<std::string, double> values;
     for (size_t c = 3; c < cells.size(); ++c)
-      row.values[header[c]] = cellNumber(cells[c], number, header[c]);
+      values[header[c]] = cellNumber(cells[c], where, header[c]);
+    try {
+      row.levels = glyph.levelsFor(values);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(where + " (" + row.label + "): " + e.what());
+    }
     rows.push_back(row);
   }
-  if (rows.empty()) throw std::runtime_error(path + ": no rows");
+  if (rows.empty()) throw std::runtime_error(path + ": the table has no rows");
   return rows;
 }
 
-// Equirectangular projection with cos(mean latitude), fitted into the map with a margin of
-// one glyph.
-std::vector<cv::Point> project(const std::vector<MapRow>& rows, int width, int glyph, int& height) {
-  double lon0 = 1e9, lon1 = -1e9, lat0 = 1e9, lat1 = -1e9;
+struct MapLayout {
+  int height = 0;
+  std::vector<cv::Point> centres;  // one per row
+};
+
+// Equirectangular projection with cos(mean latitude), north up, one scale for both axes: the
+// largest that fits the rows' extent into the width and kMaxMapSide with a margin of one glyph
+// (plus room for the bottom labels). Rows at one place get scale 0 and sit in the middle.
+MapLayout project(const std::vector<MapRow>& rows, int width, int glyph) {
+  double lon0 = rows[0].lon, lon1 = lon0, lat0 = rows[0].lat, lat1 = lat0;
   for (const MapRow& r : rows) {
     lon0 = std::min(lon0, r.lon), lon1 = std::max(lon1, r.lon);
     lat0 = std::min(lat0, r.lat), lat1 = std::max(lat1, r.lat);
   }
   const double squeeze = std::cos(0.5 * (lat0 + lat1) * kPi / 180.0);
-  const double span_x = std::max(1e-6, (lon1 - lon0) * squeeze),
-               span_y = std::max(1e-6, lat1 - lat0);
-  const double scale = (width - 2.0 * glyph) / span_x;
-  height = static_cast<int>(span_y * scale) + 2 * glyph + 20;
-  std::vector<cv::Point> centres;
+  const double span_x = (lon1 - lon0) * squeeze, span_y = lat1 - lat0;
+  const double room_x = width - 2.0 * glyph;  // >= glyph: checked with the options
+  const double room_y = kMaxMapSide - 2.0 * glyph - kLabelRoom;
+  double scale = HUGE_VAL;
+  if (span_x > 0.0) scale = std::min(scale, room_x / span_x);
+  if (span_y > 0.0) scale = std::min(scale, room_y / span_y);
+  if (!std::isfinite(scale)) scale = 0.0;  // one place (or spans too small to tell apart)
+  MapLayout layout;
+  layout.height =
+      std::min(kMaxMapSide, 2 * glyph + kLabelRoom + static_cast<int>(std::ceil(span_y * scale)));
+  const double lon_middle = 0.5 * (lon0 + lon1);
   for (const MapRow& r : rows) {
-    centres.emplace_back(static_cast<int>(glyph + (r.lon - lon0) * squeeze * scale),
-                         static_cast<int>(glyph + (lat1 - r.lat) * scale));
+    layout.centres.emplace_back(
+        static_cast<int>(std::lround(0.5 * width + (r.lon - lon_middle) * squeeze * scale)),
+        static_cast<int>(std::lround(glyph + (lat1 - r.lat) * scale)));
   }
-  return centres;
+  return layout;
+}
+
+// Overlapping glyphs are still drawn (rows at one place are valid data) but the mix cannot be
+// read, so the user is told which rows to look at.
+void warnAboutOverlaps(const std::vector<MapRow>& rows, const std::vector<cv::Point>& centres,
+                       int glyph, std::ostream& err) {
+  const double too_close = kOverlapFraction * glyph;
+  size_t pairs = 0;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    for (size_t j = i + 1; j < rows.size(); ++j) {
+      const cv::Point d = centres[i] - centres[j];
+      if (std::hypot(d.x, d.y) >= too_close) continue;
+      if (++pairs <= kMaxOverlapWarnings) {
+        err << "vicc_glyph design-map: warning: the glyphs of '" << rows[i].label << "' (line "
+            << rows[i].line << ") and '" << rows[j].label << "' (line " << rows[j].line
+            << ") overlap and cannot be read; use a larger --width or a smaller --glyph-size, "
+               "or move them apart in the table\n";
+      }
+    }
+  }
+  if (pairs > kMaxOverlapWarnings) {
+    err << "vicc_glyph design-map: warning: " << pairs - kMaxOverlapWarnings
+        << " more pairs of glyphs overlap\n";
+  }
 }
 
 // Darken-blend (per-channel minimum): the glyphs' white backgrounds do not cover neighbours.
@@ -130,7 +242,7 @@ void stamp(cv::Mat& map, const cv::Mat& glyph, cv::Point centre, const std::stri
 
 int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out,
                         std::ostream& err) {
-  std::string design_path, table, output, model_path = defaultPerceptionModelPath();
+  std::string design_path, table, output, model_path;  // model_path: empty for the default
   int glyph_size = 96, width = 900;
   try {
     const ParsedArguments parsed = parseArguments(args, mapOptions());
@@ -146,6 +258,14 @@ int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out,
     if (parsed.has("glyph-size"))
       glyph_size = parseInteger("glyph-size", parsed.value("glyph-size"), 16, 1024);
     if (parsed.has("width")) width = parseInteger("width", parsed.value("width"), 64, 8192);
+    // A glyph size of margin on either side, and at least one for the map between them: with
+    // less the scale shrinks to nothing or turns negative and flips the map.
+    if (width < 3 * glyph_size) {
+      throw UsageError("--width " + std::to_string(width) + " is too narrow for --glyph-size " +
+                       std::to_string(glyph_size) +
+                       ": --width must be at least 3 x --glyph-size (" +
+                       std::to_string(3 * glyph_size) + ")");
+    }
     if (parsed.has("model")) model_path = parsed.value("model");
   } catch (const UsageError& e) {
     err << "vicc_glyph design-map: " << e.what() << "\n\n";
@@ -153,23 +273,23 @@ int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out,
     return 2;
   }
   try {
-    const perception::PerceptionModel model = perception::loadPerceptionModel(model_path);
+    const perception::PerceptionModel model =
+        perception::loadPerceptionModel(perceptionModelPathOrDefault(model_path));
     const design::GlyphDesign glyph = design::loadDesign(design_path, model);
-    const std::vector<MapRow> rows = readTable(table);
-    int height = 0;
-    const std::vector<cv::Point> centres = project(rows, width, glyph_size, height);
-    cv::Mat map(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
+    const std::vector<MapRow> rows = readTable(table, glyph);
+    const MapLayout layout = project(rows, width, glyph_size);
+    warnAboutOverlaps(rows, layout.centres, glyph_size, err);
+    cv::Mat map(layout.height, width, CV_8UC3, cv::Scalar(255, 255, 255));
     DiffusionCurveRenderer renderer;
     RenderOptions options;
     options.background = glyph.background;
     const DiffusionCurveImage icon = design::loadIcon(glyph, glyph_size);  // once for the map
     for (size_t i = 0; i < rows.size(); ++i) {
-      const std::vector<int> levels = glyph.levelsFor(rows[i].values);
       RenderResult result;
-      renderer.render(design::buildGlyph(glyph, levels, model, icon), options, result);
+      renderer.render(design::buildGlyph(glyph, rows[i].levels, model, icon), options, result);
       cv::Mat bgr;
       cv::cvtColor(toRgb8(result.image), bgr, cv::COLOR_RGB2BGR);
-      stamp(map, bgr, centres[i], rows[i].label);
+      stamp(map, bgr, layout.centres[i], rows[i].label);
     }
     writePng8(map, ChannelOrder::kBgr, output);
     out << "wrote " << output << " (" << rows.size() << " glyphs)\n";

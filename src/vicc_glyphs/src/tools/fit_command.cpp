@@ -2,6 +2,7 @@
 
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 
 #include "command_line.hpp"
 #include "model_path.hpp"
@@ -67,7 +68,7 @@ std::string fileHeader(const std::string& survey, const ModelFit& fit, const Fit
 }  // namespace
 
 int runFitCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  std::string survey, output, base = defaultPerceptionModelPath();
+  std::string survey, output, base;  // base: empty for the default model, found below
   FitOptions options;
   try {
     const ParsedArguments parsed = parseArguments(args, fitOptions());
@@ -88,8 +89,14 @@ int runFitCommand(const std::vector<std::string>& args, std::ostream& out, std::
     return 2;
   }
   try {
-    const ModelFit fit =
-        fitPerceptionModel(loadSurveyCsv(survey), loadPerceptionModel(base), options);
+    const std::vector<SurveyAnswer> answers = loadSurveyCsv(survey);
+    // Without answers the "fitted" model would be the base model, written as if fitted.
+    if (answers.empty()) throw std::runtime_error(survey + ": the table has no answers");
+    const ModelFit fit = fitPerceptionModel(
+        answers, loadPerceptionModel(perceptionModelPathOrDefault(base, "base")), options);
+    if (fit.variables.empty() && fit.calibrations.empty()) {
+      throw std::runtime_error(survey + ": no variable or calibration could be fitted");
+    }
     for (const VariableFit& v : fit.variables) printVariableFit(v, out);
     for (const CalibrationFit& c : fit.calibrations) {
       out << toString(c.variable) << " " << toString(c.waveform)

@@ -5,7 +5,21 @@
 
 namespace vicc_glyphs::tools {
 
-/// The package's config/perception_model.yaml (source tree; set at build time).
+/// The package's config/perception_model.yaml in share/vicc_glyphs of the devel or install
+/// space that holds vicc_glyph. Throws std::runtime_error when it is not there (a copied or
+/// relocated binary): the message says the default model was not found, where it was looked
+/// for, and to give `--<option> MODEL.yaml` instead.
+std::string findDefaultPerceptionModel(const std::string& option = "model");
+
+/// `given` when a model file was given on the command line, else findDefaultPerceptionModel:
+/// call it where errors are reported, after --help and the options are handled.
+std::string perceptionModelPathOrDefault(const std::string& given,
+                                         const std::string& option = "model");
+
+/// findDefaultPerceptionModel for callers that take the default before parsing their options.
+/// Never throws: when the default model is missing it returns a name that no file has, the
+/// not-found message in angle brackets, so that --help and --model still work and loading
+/// the default fails with that message.
 std::string defaultPerceptionModelPath();
 
 }  // namespace vicc_glyphs::tools

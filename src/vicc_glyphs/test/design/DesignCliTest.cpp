@@ -3,6 +3,9 @@
 
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "../support/tool_run.hpp"
 
@@ -21,6 +24,15 @@ class DesignCliTest : public ::testing::Test {
   static std::string design(const std::string& name) {
     return std::string(VICC_GLYPHS_DESIGNS_DIR) + "/" + name + ".yaml";
   }
+  // design-map of the rain design for a table with these rows (after its header).
+  vicc_glyphs::test::ToolRun map(const std::string& rows, const std::string& options = "",
+                                 const std::string& header = kRainHeader) const {
+    std::ofstream(dir_ / "rows.csv") << header << rows;
+    return run("design-map " + design("rain_forecast_sine") + " --table " +
+               (dir_ / "rows.csv").string() + " --out " + mapPng().string() + " " + options);
+  }
+  std::filesystem::path mapPng() const { return dir_ / "map.png"; }
+  static constexpr const char* kRainHeader = "label,lon,lat,probability,amount\n";
   std::filesystem::path dir_;
 };
 
@@ -82,9 +94,122 @@ TEST_F(DesignCliTest, MapPlacesOneGlyphPerRow) {
   };
   EXPECT_LT(darkest(128), 400);
   EXPECT_LT(darkest(372), 400);
+  EXPECT_EQ(result.err, "");  // apart: no overlap warning
   std::ofstream(csv) << "label,lon,lat,probability,amount\nA,8,50,95,1\nB,12,52,140,20\n";
   const auto bad = run("design-map " + design("rain_forecast_sine") + " --table " + csv.string() +
                        " --out " + png.string());
   EXPECT_EQ(bad.exit_code, 1);
-  EXPECT_NE(bad.err.find("probability = 140 is outside its domain"), std::string::npos);
+  EXPECT_NE(bad.err.find("line 3 (B): probability = 140 is outside its domain"), std::string::npos)
+      << bad.err;
+}
+
+namespace {
+
+// Sum of B, G and R of the darkest pixel in the rectangle: below 400 where a glyph draws.
+double darkestIn(const cv::Mat& image, const cv::Rect& area) {
+  double low = 255 * 3;
+  const cv::Mat part = image(area & cv::Rect(0, 0, image.cols, image.rows));
+  part.forEach<cv::Vec3b>(
+      [&](const cv::Vec3b& p, const int*) { low = std::min<double>(low, p[0] + p[1] + p[2]); });
+  return low;
+}
+
+}  // namespace
+
+TEST_F(DesignCliTest, MapRefusesAWidthThatLeavesNoRoomBetweenTheMargins) {
+  // 2 x 200 > 300 made the scale negative: the map was drawn upside down.
+  const auto narrow = map("A,8,50,95,1\nB,12,52,40,20\n", "--width 300 --glyph-size 200");
+  EXPECT_EQ(narrow.exit_code, 2);
+  EXPECT_NE(narrow.err.find("--width 300 is too narrow for --glyph-size 200: --width must be at "
+                            "least 3 x --glyph-size (600)"),
+            std::string::npos)
+      << narrow.err;
+  EXPECT_FALSE(std::filesystem::exists(mapPng()));
+  EXPECT_EQ(map("A,8,50,95,1\n", "--width 383 --glyph-size 128").exit_code, 2);
+  EXPECT_EQ(map("A,8,50,95,1\n", "--width 384 --glyph-size 128").exit_code, 0);
+}
+
+TEST_F(DesignCliTest, MapIsNorthUpAndItsHeightIsBounded) {
+  // 0.001 degrees of longitude over 2 of latitude: fitted to the width the map was 14 GB.
+  const auto tall = map("South,10,50,95,1\nNorth,10.001,52,40,20\n");
+  ASSERT_EQ(tall.exit_code, 0) << tall.err;
+  cv::Mat image = cv::imread(mapPng().string());
+  ASSERT_EQ(image.cols, 900);
+  EXPECT_EQ(image.rows, 8192);
+  EXPECT_LT(darkestIn(image, {400, 0, 100, 150}), 400);                   // North at the top
+  EXPECT_LT(darkestIn(image, {400, image.rows - 200, 100, 200}), 400);    // South at the bottom
+  EXPECT_EQ(darkestIn(image, {0, 200, 900, image.rows - 400}), 255 * 3);  // white between
+
+  // One longitude for all rows (a zero span) tried to allocate 1.9 TB.
+  ASSERT_EQ(map("South,10,50,95,1\nNorth,10,52,40,20\n").exit_code, 0);
+  EXPECT_EQ(cv::imread(mapPng().string()).rows, 8192);
+}
+
+TEST_F(DesignCliTest, MapCentresRowsAtOnePlace) {
+  const auto single = map("A,10,50,95,1\n", "--glyph-size 96 --width 900");
+  ASSERT_EQ(single.exit_code, 0) << single.err;
+  const cv::Mat image = cv::imread(mapPng().string());
+  EXPECT_EQ(image.size(), cv::Size(900, 2 * 96 + 20));
+  EXPECT_LT(darkestIn(image, {430, 76, 40, 40}), 400);              // centre (450, 96)
+  EXPECT_EQ(darkestIn(image, {0, 0, 390, image.rows}), 255 * 3);    // nothing left of it
+  EXPECT_EQ(darkestIn(image, {510, 0, 390, image.rows}), 255 * 3);  // nor right of it
+}
+
+TEST_F(DesignCliTest, MapWarnsNamingBothRowsWhoseGlyphsOverlap) {
+  const auto same = map("Here,10,50,95,1\nThere,12,52,40,20\nAlsoHere,10,50,40,20\n");
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_NE(same.err.find("warning: the glyphs of 'Here' (line 2) and 'AlsoHere' (line 4) "
+                          "overlap"),
+            std::string::npos)
+      << same.err;
+  EXPECT_EQ(same.err.find("'There'"), std::string::npos) << same.err;
+  EXPECT_TRUE(std::filesystem::exists(mapPng()));
+}
+
+TEST_F(DesignCliTest, MapRefusesNonFiniteAndOutOfRangeCellsNamingLineAndColumn) {
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"B,nan,50,95,1", "line 3, column lon: 'nan' is not a finite number"},
+      {"B,8,inf,95,1", "line 3, column lat: 'inf' is not a finite number"},
+      {"B,8,-90.5,95,1", "line 3, column lat: '-90.5' is outside [-90, 90]"},
+      {"B,180.5,50,95,1", "line 3, column lon: '180.5' is outside [-180, 180]"},
+      {"B,8,50,NaN,1", "line 3, column probability: 'NaN' is not a finite number"},
+      {"B,8,50,95,-inf", "line 3, column amount: '-inf' is not a finite number"},
+      {"B,8,50,95,", "line 3, column amount: '' is not a number"},
+  };
+  for (const auto& [row, message] : cases) {
+    const auto bad = map("A,8,50,95,1\n" + row + "\n");
+    EXPECT_EQ(bad.exit_code, 1) << row;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << row << ": " << bad.err;
+    EXPECT_EQ(bad.err.find("OpenCV"), std::string::npos) << bad.err;
+  }
+}
+
+TEST_F(DesignCliTest, MapHeaderMustHaveEachDesignVariableOnce) {
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"label,lon,lat,probability,amount,amount\n", "column 'amount' appears twice in the header"},
+      {"label,lon,lat,lat,probability,amount\n", "column 'lat' appears twice in the header"},
+      {"label,lon,lat,probability,amount,wind\n",
+       "column 'wind' is not a variable of the design (design rain_forecast_sine has "
+       "probability, amount)"},
+      {"label,lon,lat,amount\n", "the header has no column for variable 'probability'"},
+      {"lat,lon,label,probability,amount\n", "the header must start with label,lon,lat"},
+  };
+  for (const auto& [header, message] : cases) {
+    const auto bad = map("A,8,50,95,1,1\n", "", header);
+    EXPECT_EQ(bad.exit_code, 1) << header;
+    EXPECT_NE(bad.err.find(message), std::string::npos) << header << ": " << bad.err;
+  }
+  // Any column order is fine: the values go by name.
+  const auto reordered = map("A,8,50,1,95\n", "", "label,lon,lat,amount,probability\n");
+  EXPECT_EQ(reordered.exit_code, 0) << reordered.err;
+}
+
+TEST_F(DesignCliTest, MapAcceptsWindowsLineEndsAndByteOrderMark) {
+  const auto crlf =
+      map("A,8,50,95,1\r\nB,12,52,40,20\r\n", "", "label,lon,lat,probability,amount\r\n");
+  ASSERT_EQ(crlf.exit_code, 0) << crlf.err;
+  EXPECT_NE(crlf.out.find("(2 glyphs)"), std::string::npos) << crlf.out;
+  // Spreadsheets also start the file with a UTF-8 byte order mark.
+  const auto bom = map("A,8,50,95,1\r\n", "", "\xEF\xBB\xBFlabel,lon,lat,probability,amount\r\n");
+  EXPECT_EQ(bom.exit_code, 0) << bom.err;
 }

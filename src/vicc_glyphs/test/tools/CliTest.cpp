@@ -8,6 +8,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 // Runs the built vicc_glyph binary (VICC_GLYPH_BINARY, set by cmake/cli.cmake) like a user.
 
@@ -38,10 +40,10 @@ class CliTest : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  ToolRun run(const std::string& arguments) const {
+  ToolRun run(const std::string& arguments, const std::string& binary = VICC_GLYPH_BINARY) const {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = std::string(VICC_GLYPH_BINARY) + " " + arguments + " >" +
-                                out.string() + " 2>" + err.string();
+    const std::string command =
+        binary + " " + arguments + " >" + out.string() + " 2>" + err.string();
     const int status = std::system(command.c_str());
     ToolRun result;
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -52,6 +54,10 @@ class CliTest : public ::testing::Test {
 
   static std::string data(const std::string& name) {
     return std::string(TEST_DATA_DIR) + "/" + name;
+  }
+  // The package's own files, from the test data directory (test/tools).
+  static std::string packageFile(const std::string& name) {
+    return std::string(TEST_DATA_DIR) + "/../../" + name;
   }
 
   fs::path dir_;
@@ -154,6 +160,57 @@ TEST_F(CliTest, HelpSucceeds) {
   const ToolRun help = run("render --help");
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.out.find("--size N"), std::string::npos);
+}
+
+// A copy of vicc_glyph with no share/vicc_glyphs near it (as when copied out of the devel
+// space) aborted (uncaught exception) before reading its arguments.
+TEST_F(CliTest, CopiedBinaryWithoutShareRunsWithHelpAndModelAndSaysWhatIsMissing) {
+  const fs::path copy = dir_ / "a" / "b" / "c" / "vicc_glyph";  // share/ looked for up to c/../..
+  fs::create_directories(copy.parent_path());
+  fs::copy_file(VICC_GLYPH_BINARY, copy);
+  for (const std::string command : {"levels", "design", "design-map", "fit-model"}) {
+    const ToolRun help = run(command + " --help", copy.string());
+    EXPECT_EQ(help.exit_code, 0) << command << ": " << help.err;
+    EXPECT_NE(help.out.find("usage: vicc_glyph " + command), std::string::npos) << help.out;
+  }
+  const std::string model = packageFile("config/perception_model.yaml");
+  const ToolRun given = run("levels --model " + model, copy.string());
+  EXPECT_EQ(given.exit_code, 0) << given.err;
+  EXPECT_NE(given.out.find("levels"), std::string::npos);
+
+  const fs::path rows = dir_ / "rows.csv";
+  std::ofstream(rows) << "label,lon,lat,probability,amount\nA,8,50,95,1\n";
+  const std::string map = "design-map " + packageFile("designs/rain_forecast_sine.yaml") +
+                          " --table " + rows.string() + " --out " + (dir_ / "map.png").string();
+  EXPECT_EQ(run(map + " --model " + model, copy.string()).exit_code, 0);
+  const fs::path survey = dir_ / "survey.csv";
+  std::ofstream(survey) << "stimulus,perceived,experiment,second_stimulus\n1,1,ColAmpl2,\n";
+  const std::vector<std::pair<std::string, std::string>> without_model{
+      {"levels", "give --model MODEL.yaml"},
+      {"design " + packageFile("designs/rain_forecast_sine.yaml") +
+           " --values probability=5,amount=1 --out " + (dir_ / "glyph.png").string(),
+       "give --model MODEL.yaml"},
+      {map, "give --model MODEL.yaml"},
+      {"fit-model " + survey.string() + " --out " + (dir_ / "m.yaml").string(),
+       "give --base MODEL.yaml"},
+  };
+  for (const auto& [command, hint] : without_model) {
+    const ToolRun missing = run(command, copy.string());
+    EXPECT_EQ(missing.exit_code, 1) << command;
+    EXPECT_NE(missing.err.find("the default perception model was not found"), std::string::npos)
+        << missing.err;
+    EXPECT_NE(missing.err.find(hint), std::string::npos) << missing.err;
+  }
+}
+
+TEST_F(CliTest, FitModelRefusesASurveyWithoutAnswers) {
+  const fs::path survey = dir_ / "survey.csv", model = dir_ / "fitted.yaml";
+  std::ofstream(survey) << "stimulus,perceived,experiment,second_stimulus\n\n";
+  const ToolRun empty = run("fit-model " + survey.string() + " --out " + model.string());
+  EXPECT_EQ(empty.exit_code, 1);
+  EXPECT_NE(empty.err.find(survey.string() + ": the table has no answers"), std::string::npos)
+      << empty.err;
+  EXPECT_FALSE(fs::exists(model));  // the base model is not written as if fitted
 }
 
 }  // namespace
