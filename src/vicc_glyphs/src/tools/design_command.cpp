@@ -48,8 +48,9 @@ int runDesignCommand(const std::vector<std::string>& args, std::ostream& out, st
     output = parsed.value("out");
     if (values.empty()) throw UsageError("missing --values K=V,...");
     if (output.empty()) throw UsageError("missing --out OUT.png");
-    if (parsed.has("size")) size = parseInteger("size", parsed.value("size"), design::kMinGlyphPixels,
-                                                   design::kMaxGlyphPixels);
+    if (parsed.has("size"))
+      size = parseInteger("size", parsed.value("size"), design::kMinGlyphPixels,
+                          design::kMaxGlyphPixels);
     if (parsed.has("model")) model_path = parsed.value("model");
     dci = parsed.value("dci");
   } catch (const UsageError& e) {

@@ -287,6 +287,7 @@ int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out,
     for (size_t i = 0; i < rows.size(); ++i) {
       RenderResult result;
       renderer.render(design::buildGlyph(glyph, rows[i].levels, model, icon), options, result);
+      requireSomethingDrawn(result.report, "row " + rows[i].label);
       cv::Mat bgr;
       cv::cvtColor(toRgb8(result.image), bgr, cv::COLOR_RGB2BGR);
       stamp(map, bgr, layout.centres[i], rows[i].label);

@@ -262,6 +262,26 @@ TEST(DesignBuild, AModificationNoCurveCanTakeIsAnError) {
       buildGlyph(design, design.levelsFor({{"probability", 95}, {"amount", 5}}), model()));
 }
 
+// A fill colour to replace that the selected curves do not have left every level alike (the
+// ICP brain with its colour one digit off rendered pink for all three categories).
+TEST(DesignBuild, AFillColourThatIsNotOnTheCurvesIsAnError) {
+  GlyphDesign design = shipped("intracranial_pressure");
+  for (DesignVariable& variable : design.variables) {
+    for (Encoding& encoding : variable.encodings) {
+      if (encoding.channel == Channel::FillColor)
+        encoding.replace = Color(0xe7, 0xa3, 0xae) / 255.0;
+    }
+  }
+  try {
+    buildGlyph(design, design.levelsFor({{"pressure", 10}, {"category", 0}}), model());
+    ADD_FAILURE() << "no error";
+  } catch (const DesignError& e) {
+    EXPECT_NE(std::string(e.what()).find("the colour to replace, e7a3ae, is not on the selected"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // Shrunk drops leave the cloud: the gap and the sky around them are background, not a haze of
 // the colours the drops and the cloud recorded where they touched.
 TEST(DesignBuild, ShrunkDropsLeaveNoHaze) {

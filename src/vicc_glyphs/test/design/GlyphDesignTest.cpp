@@ -105,6 +105,18 @@ TEST(GlyphDesign, ErrorsNameTheKey) {
   EXPECT_NE(errorOf(fill).find("colors[1] must be an RRGGBB colour"), std::string::npos)
       << errorOf(fill);
   EXPECT_NE(errorOf("- 1").find("the design must be a map"), std::string::npos);
+  // Flat waves show no frequency: the fixed amplitude of geometric_frequency must reach the
+  // model's smallest geometric amplitude (0.1 mm at 50 mm), or every level looks the same.
+  const std::string flat =
+      replaced(text, "levels: [0, 4]", "levels: [0, 4]\n        amplitude_mm: 0");
+  EXPECT_NE(errorOf(flat).find("amplitude_mm = 0 mm is below the smallest perceptible geometric "
+                               "amplitude of a 50 mm glyph, 0.1 mm"),
+            std::string::npos)
+      << errorOf(flat);
+  EXPECT_NE(errorOf(replaced(flat, "amplitude_mm: 0", "amplitude_mm: 0.09")).find("below"),
+            std::string::npos);
+  EXPECT_NO_THROW(
+      parseDesign(replaced(flat, "amplitude_mm: 0", "amplitude_mm: 0.1"), "/base", model()));
 }
 
 TEST(GlyphDesign, ValuesMapToLevelsByTheEdges) {

@@ -120,6 +120,31 @@ TEST(OrzanXml, SampleSurvivesRoundTrip) {
   expectSameImage(image, parseOrzanXml(formatOrzanXml(image)));
 }
 
+// An emitting side without colour points diffused black: the file is refused instead, naming
+// the curve and the side; a barrier side (boundary="Neumann") needs none.
+TEST(OrzanXml, AnEmittingSideWithoutColoursIsAFormatError) {
+  const std::string curve_start =
+      "<curve_set image_width=\"32\" image_height=\"32\"><curve><control_points_set>"
+      "<control_point x=\"2\" y=\"2\"/><control_point x=\"10\" y=\"10\"/>"
+      "<control_point x=\"20\" y=\"20\"/><control_point x=\"30\" y=\"30\"/>"
+      "</control_points_set>"
+      "<left_colors_set><left_color G=\"0\" R=\"255\" globalID=\"0\" B=\"0\"/>"
+      "</left_colors_set>";
+  try {
+    parseOrzanXml(curve_start + "<right_colors_set></right_colors_set></curve></curve_set>");
+    ADD_FAILURE() << "no error";
+  } catch (const FormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("right_colors_set has no colour points"),
+              std::string::npos)
+        << e.what();
+  }
+  const DiffusionCurveImage barrier = parseOrzanXml(
+      curve_start +
+      "<right_colors_set boundary=\"Neumann\"></right_colors_set></curve></curve_set>");
+  ASSERT_EQ(barrier.curves.size(), 1u);
+  EXPECT_FALSE(barrier.curves[0].right_emits);
+}
+
 TEST(OrzanXml, WritingAnInvalidImageThrows) {
   DiffusionCurveImage image = makeImage();
   image.curves[0].control_points.pop_back();

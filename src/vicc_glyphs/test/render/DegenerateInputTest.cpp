@@ -36,6 +36,31 @@ TEST(DegenerateInputTest, ImageWithoutCurvesIsTheBackground) {
   expectUniform(renderDiffusionCurves({32, 24, {}}, withBackground(background)).image, background);
 }
 
+// The report says whether any curve coloured a pixel; requireSomethingDrawn turns a picture
+// of only the background into an error naming what was rendered.
+TEST(DegenerateInputTest, TheReportCountsThePixelsACurveColoured) {
+  DiffusionCurveImage outside{32, 32, {}};
+  outside.curves.push_back(circleCurve({200, -300}, 20, Color(1, 0, 0), Color(0, 0, 1)));
+  for (const DiffusionCurveImage& nothing : {DiffusionCurveImage{32, 24, {}}, outside}) {
+    const RenderResult result = renderDiffusionCurves(nothing);
+    EXPECT_EQ(result.report.curve_pixels, 0);
+    try {
+      requireSomethingDrawn(result.report, "icon.svg");
+      ADD_FAILURE() << "no error";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("icon.svg: nothing to draw"), std::string::npos);
+    }
+  }
+  DiffusionCurveImage circle{32, 32, {}};
+  circle.curves.push_back(circleCurve({16, 16}, 8, Color(1, 0, 0), Color(0, 0, 1)));
+  const RenderResult drawn = renderDiffusionCurves(circle);
+  // Every lattice link the circle crosses fixes a pixel on either side: about 4 per pixel of
+  // its circumference's extent, far more than none.
+  EXPECT_GT(drawn.report.curve_pixels, 50);
+  EXPECT_LT(drawn.report.curve_pixels, 32 * 32);
+  EXPECT_NO_THROW(requireSomethingDrawn(drawn.report, "circle"));
+}
+
 TEST(DegenerateInputTest, ZeroLengthCurveIsIgnored) {
   DiffusionCurveImage image{32, 32, {}};
   image.curves.push_back(lineCurve({16, 16}, {16, 16}, Color(1, 0, 0), Color(0, 0, 1)));

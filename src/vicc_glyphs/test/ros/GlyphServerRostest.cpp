@@ -68,6 +68,9 @@ TEST(GlyphServer, BadRequestsAreErrorsAndTheServerStaysAlive) {
       {request("rain_forecast_sine", {"probability", "amount", "wind"}, {50, 1, 2}),
        "no variable 'wind'"},
       {request("rain_forecast_sine", {"probability", "amount"}, {50, 1}, -5), "size must be"},
+      // Below 16 px waves and levels cannot be told apart (it used to draw 2 px "glyphs").
+      {request("intracranial_pressure", {"pressure", "category"}, {30, 2}, 8),
+       "size must be 0 (the design's default) or 16 to 4096 pixels, got 8"},
   };
   for (auto c : cases) {
     ASSERT_TRUE(callRender(c.call)) << c.expected;
@@ -155,7 +158,8 @@ std::string startUpError(const std::string& name, const std::string& yaml) {
   return message;
 }
 
-// A one-variable colour design on `icon`, its colour on `curves`.
+// A one-variable colour design on `icon`, its colour on `curves` (replacing head_brain.svg's
+// brain colour).
 std::string colourDesign(const std::string& name, const std::string& icon,
                          const std::string& curves) {
   return "name: " + name + "\nicon: " + icon +
@@ -170,11 +174,29 @@ std::string colourDesign(const std::string& name, const std::string& icon,
          "        curves: \"" +
          curves +
          "\"\n"
-         "        replace: \"000000\"\n"
+         "        replace: \"e7a3ad\"\n"
          "        colors: [\"ff0000\", \"00ff00\"]\n";
 }
 
 }  // namespace
+
+// A design whose colour to replace is not on the selected curves would show every level
+// alike; requests ask for designs by file name, and a different name inside made the cache
+// (keyed by name) answer with another design's glyph. Both stop the server at start.
+TEST(GlyphServerParameters, ADesignThatCannotShowItsLevelsOrIsMisnamedStopsTheStart) {
+  const std::string icon =
+      vicc_glyphs::ros_glyph::GlyphServerParameters::withDefaultPaths().designs_dir +
+      "/icons/head_brain.svg";
+  std::string yaml = colourDesign("wrong_colour", icon, "1");
+  yaml.replace(yaml.find("e7a3ad"), 6, "123456");
+  const std::string no_colour = startUpError("wrong_colour", yaml);
+  EXPECT_NE(no_colour.find("the colour to replace, 123456, is not on the selected curves"),
+            std::string::npos)
+      << no_colour;
+  const std::string misnamed = startUpError("file_name", colourDesign("other_name", icon, "1"));
+  EXPECT_NE(misnamed.find("is named 'other_name'"), std::string::npos) << misnamed;
+  EXPECT_NE(misnamed.find("must be its file name (file_name)"), std::string::npos) << misnamed;
+}
 
 // A design whose icon cannot be imported stops the server at start, naming design and file
 // (it used to fail only when a glyph was requested).

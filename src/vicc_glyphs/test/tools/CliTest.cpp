@@ -155,6 +155,43 @@ TEST_F(CliTest, BadFilesFailWithAMessage) {
   EXPECT_NE(unwritable.err.find("cannot write"), std::string::npos) << unwritable.err;
 }
 
+// A picture of only the background would pass for a rendering: a uniform PNG (nothing to
+// trace) or a DCI whose curves miss the frame is an error, and nothing is written.
+TEST_F(CliTest, NothingToDrawIsAnErrorNotABackgroundPicture) {
+  const fs::path outside = dir_ / "outside.xml";
+  std::ofstream(outside)
+      << "<curve_set image_width=\"32\" image_height=\"32\"><curve><control_points_set>"
+         "<control_point x=\"200\" y=\"200\"/><control_point x=\"210\" y=\"210\"/>"
+         "<control_point x=\"220\" y=\"220\"/><control_point x=\"230\" y=\"230\"/>"
+         "</control_points_set><left_colors_set>"
+         "<left_color G=\"0\" R=\"255\" globalID=\"0\" B=\"0\"/></left_colors_set>"
+         "<right_colors_set><right_color G=\"0\" R=\"0\" globalID=\"0\" B=\"255\"/>"
+         "</right_colors_set></curve></curve_set>";
+  const fs::path png = dir_ / "nothing.png";
+  const ToolRun render = run("render " + outside.string() + " --out " + png.string());
+  EXPECT_EQ(render.exit_code, 1);
+  EXPECT_NE(render.err.find("nothing to draw"), std::string::npos) << render.err;
+  EXPECT_FALSE(fs::exists(png));
+  // Inside the frame, but both sides barriers: nothing emits a colour.
+  const fs::path barriers = dir_ / "barriers.xml";
+  std::ofstream(barriers)
+      << "<curve_set image_width=\"32\" image_height=\"32\"><curve><control_points_set>"
+         "<control_point x=\"2\" y=\"2\"/><control_point x=\"10\" y=\"10\"/>"
+         "<control_point x=\"20\" y=\"20\"/><control_point x=\"30\" y=\"30\"/>"
+         "</control_points_set><left_colors_set boundary=\"Neumann\"></left_colors_set>"
+         "<right_colors_set boundary=\"Neumann\"></right_colors_set></curve></curve_set>";
+  const ToolRun modify = run("modify " + barriers.string() + " --out " + png.string() +
+                             " --size 64 --frequency 4 --amplitude 0.5");
+  EXPECT_EQ(modify.exit_code, 1);
+  EXPECT_NE(modify.err.find("nothing to draw"), std::string::npos) << modify.err;
+  EXPECT_FALSE(fs::exists(png));
+  // Glyphs narrower than 16 px cannot show their waves: modify refuses them.
+  const ToolRun tiny = run("modify " + data("red_square.svg") + " --out " + png.string() +
+                           " --size 8 --frequency 4 --amplitude 0.5");
+  EXPECT_EQ(tiny.exit_code, 2);
+  EXPECT_NE(tiny.err.find("--size"), std::string::npos) << tiny.err;
+}
+
 TEST_F(CliTest, HelpSucceeds) {
   EXPECT_EQ(run("--help").exit_code, 0);
   const ToolRun help = run("render --help");

@@ -5,8 +5,8 @@
 // pass.
 
 #include <memory>
-#include <string>
 #include <opencv2/core.hpp>
+#include <string>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
 #include "vicc_glyphs/render/multigrid.hpp"

@@ -100,7 +100,7 @@ class GlyphServer {
   /// kKeptBufferSize).
   std::unique_ptr<DiffusionCurveRenderer> renderer_ = std::make_unique<DiffusionCurveRenderer>();
   std::map<CacheKey, cv::Mat> cache_;
-  std::size_t cache_bytes_ = 0;  ///< pixels of the cached glyphs
+  std::size_t cache_bytes_ = 0;      ///< pixels of the cached glyphs
   std::list<CacheKey> cache_order_;  // oldest first
   std::mutex mutex_;
 };
