@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 #include <type_traits>
+#include <utility>
 
 namespace vicc_glyphs {
 namespace {
@@ -84,6 +85,29 @@ Point2 DiffusionCurve::derivativeAt(double s) const {
 
 Color interpolateColor(const std::vector<ColorPoint>& points, double s) {
   return interpolate(points, s, [](const ColorPoint& p) -> Color { return p.rgb; });
+}
+
+std::optional<Color> dominantColor(const std::vector<ColorPoint>& points) {
+  if (points.empty()) return std::nullopt;
+  std::vector<std::pair<Color, double>> weights;
+  auto add = [&](const Color& rgb, double weight) {
+    for (auto& [color, total] : weights) {
+      if ((color - rgb).cwiseAbs().maxCoeff() <= kSameColorTolerance) {
+        total += weight;
+        return;
+      }
+    }
+    weights.emplace_back(rgb, weight);
+  };
+  for (size_t i = 0; i + 1 < points.size(); ++i) {
+    const double half = 0.5 * std::abs(points[i + 1].position - points[i].position);
+    add(points[i].rgb, half);
+    add(points[i + 1].rgb, half);
+  }
+  if (points.size() == 1) add(points.front().rgb, 1.0);
+  return std::max_element(weights.begin(), weights.end(),
+                          [](const auto& a, const auto& b) { return a.second < b.second; })
+      ->first;
 }
 
 Color DiffusionCurve::leftColorAt(double s) const { return interpolateColor(left_colors, s); }

@@ -30,7 +30,7 @@ struct Active {
 };
 
 // Colours that match the one a design replaces (8-bit colours / 255 from the importers).
-constexpr double kColorTolerance = 0.6 / 255.0;
+constexpr double kColorTolerance = kSameColorTolerance;
 
 double pixelsPerMm(const DiffusionCurveImage& image, const GlyphDesign& design) {
   return image.width / design.size_mm;
@@ -46,31 +46,6 @@ int replaceColor(std::vector<ColorPoint>& points, const Color& from, const Color
     }
   }
   return replaced;
-}
-
-// The colour that covers most of one side of a curve (colour points are piecewise linear in
-// `position`; each interval counts for the colours at its ends, half each).
-std::optional<Color> dominantColor(const std::vector<ColorPoint>& points) {
-  if (points.empty()) return std::nullopt;
-  std::vector<std::pair<Color, double>> weights;
-  auto add = [&](const Color& rgb, double weight) {
-    for (auto& [color, total] : weights) {
-      if ((color - rgb).cwiseAbs().maxCoeff() <= kColorTolerance) {
-        total += weight;
-        return;
-      }
-    }
-    weights.emplace_back(rgb, weight);
-  };
-  for (size_t i = 0; i + 1 < points.size(); ++i) {
-    const double half = 0.5 * std::abs(points[i + 1].position - points[i].position);
-    add(points[i].rgb, half);
-    add(points[i + 1].rgb, half);
-  }
-  if (points.size() == 1) add(points.front().rgb, 1.0);
-  return std::max_element(weights.begin(), weights.end(),
-                          [](const auto& a, const auto& b) { return a.second < b.second; })
-      ->first;
 }
 
 // The importer records, on each side of a boundary that two shapes share, the neighbour's

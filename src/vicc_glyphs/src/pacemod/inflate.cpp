@@ -1,6 +1,7 @@
 #include "vicc_glyphs/pacemod/inflate.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "vicc_glyphs/pacemod/offset_contour.hpp"
@@ -12,12 +13,14 @@ namespace vicc_glyphs {
 namespace pacemod {
 namespace {
 
+// One colour for a side of a re-fitted contour: the one that covered most of it. Where the
+// side recorded a neighbour's colour along a shared stretch (a rain drop touching the cloud),
+// a mean of the points (4 of the cloud's grey, 2 of white) made the whole outside of the
+// inflated drops grey, and the sky below them a grey haze.
 std::vector<ColorPoint> uniformSide(const std::vector<ColorPoint>& points, double end) {
-  if (points.empty()) return {};
-  Color sum = Color::Zero();
-  for (const ColorPoint& p : points) sum += p.rgb;
-  const Color mean = sum / points.size();
-  return {{0.0, mean}, {end, mean}};
+  const std::optional<Color> dominant = dominantColor(points);
+  if (!dominant) return {};
+  return {{0.0, *dominant}, {end, *dominant}};
 }
 
 std::vector<BlurPoint> uniformBlur(const std::vector<BlurPoint>& points, double end) {
@@ -55,8 +58,8 @@ Box boxOf(const Polyline& line) {
 // The closed contours within `reach` pixels of contour `index` that it must stay clear of when
 // inflated: those that neither enclose it nor lie inside it (a part beside it, e.g. the cloud a
 // rain drop hangs from). Where the inflated region reached into one of them, the region's side
-// colour (the mean that inflating gives each side) would be wrong there: a white halo in a grey
-// cloud.
+// colour (the dominant one that inflating gives each side) would be wrong there: a white halo in a
+// grey cloud.
 std::vector<Polyline> neighbours(const std::vector<Polyline>& lines, int index, double reach) {
   const Box own = boxOf(lines[index]);
   std::vector<Polyline> found;

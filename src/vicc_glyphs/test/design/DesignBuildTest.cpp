@@ -284,24 +284,38 @@ TEST(DesignBuild, AFillColourThatIsNotOnTheCurvesIsAnError) {
 
 // Shrunk drops leave the cloud: the gap and the sky around them are background, not a haze of
 // the colours the drops and the cloud recorded where they touched.
-TEST(DesignBuild, ShrunkDropsLeaveNoHaze) {
-  const GlyphDesign design = shipped("rain_forecast_sine");
-  const DiffusionCurveImage light =
-      buildGlyph(design, design.levelsFor({{"probability", 95}, {"amount", 1}}), model(), 256);
-  const RenderResult result = renderDiffusionCurves(light);
+// The darkest channel of the glyph for `amount` (mm/h) over a box given as fractions of the
+// image.
+float darkestIn(const std::string& design_name, double amount, double x0, double x1, double y0,
+                double y1) {
+  const GlyphDesign design = shipped(design_name);
+  const DiffusionCurveImage glyph =
+      buildGlyph(design, design.levelsFor({{"probability", 95}, {"amount", amount}}), model(), 256);
+  const RenderResult result = renderDiffusionCurves(glyph);
   const cv::Mat& image = result.image;  // CV_32FC3, RGB in [0, 1]
-  auto darkest = [&](double x0, double x1, double y0, double y1) {
-    float lowest = 1.0f;
-    for (int y = static_cast<int>(y0 * image.rows); y < static_cast<int>(y1 * image.rows); ++y) {
-      for (int x = static_cast<int>(x0 * image.cols); x < static_cast<int>(x1 * image.cols); ++x) {
-        const cv::Vec3f& rgb = image.at<cv::Vec3f>(y, x);
-        lowest = std::min({lowest, rgb[0], rgb[1], rgb[2]});
-      }
+  float lowest = 1.0f;
+  for (int y = static_cast<int>(y0 * image.rows); y < static_cast<int>(y1 * image.rows); ++y) {
+    for (int x = static_cast<int>(x0 * image.cols); x < static_cast<int>(x1 * image.cols); ++x) {
+      const cv::Vec3f& rgb = image.at<cv::Vec3f>(y, x);
+      lowest = std::min({lowest, rgb[0], rgb[1], rgb[2]});
     }
-    return lowest;
-  };
-  EXPECT_GT(darkest(0.02, 0.15, 0.72, 0.85), 0.97f) << "left of the drops";
-  EXPECT_GT(darkest(0.38, 0.42, 0.72, 0.76), 0.97f) << "between the drops";
+  }
+  return lowest;
+}
+
+// Inflated drops: each side of a re-fitted contour takes the colour that covered most of it.
+// The mean of its colour points (the drops recorded the cloud's grey where they touch it)
+// made the outside of the heavy-rain drops grey and the sky below a haze down to the image's
+// corners (173, 182, 191 there).
+TEST(DesignBuild, InflatedDropsLeaveNoHaze) {
+  EXPECT_GT(darkestIn("rain_forecast_sine", 20, 0.0, 0.1, 0.9, 1.0), 0.97f) << "bottom left";
+  EXPECT_GT(darkestIn("rain_forecast_sine", 20, 0.02, 0.15, 0.72, 0.85), 0.97f) << "left of drops";
+  EXPECT_GT(darkestIn("rain_forecast_sine", 20, 0.9, 1.0, 0.9, 1.0), 0.97f) << "bottom right";
+}
+
+TEST(DesignBuild, ShrunkDropsLeaveNoHaze) {
+  EXPECT_GT(darkestIn("rain_forecast_sine", 1, 0.02, 0.15, 0.72, 0.85), 0.97f) << "left of drops";
+  EXPECT_GT(darkestIn("rain_forecast_sine", 1, 0.38, 0.42, 0.72, 0.76), 0.97f) << "between drops";
 }
 
 // Hiding drops must not take the colour of the drop that stays (same colour, other curve).

@@ -14,6 +14,7 @@
 // - Colours are linear RGB in [0, 1].
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,16 @@ struct DiffusionCurveImage {
 
 /// Linear interpolation of sorted colour points at parameter s (shared by both sides).
 Color interpolateColor(const std::vector<ColorPoint>& points, double s);
+
+/// Colours within this of each other (per channel) count as one: the importers' 8-bit colours
+/// / 255, with round-off.
+constexpr double kSameColorTolerance = 0.6 / 255.0;
+
+/// The colour that covers most of one side of a curve: colour points are piecewise linear in
+/// their position, and each interval counts for the colours at its ends, half each (a single
+/// point counts alone). Empty for no points. Where a side carries a neighbour's colour along a
+/// shared stretch, this is the colour of the rest (the surroundings), not a mix of both.
+std::optional<Color> dominantColor(const std::vector<ColorPoint>& points);
 
 /// Checks the structural invariants (3K+1 points, finite coordinates and colours, colours in
 /// [0, 1], positions within [0, K] and sorted, positive image size). Returns an empty string
