@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -95,6 +96,27 @@ ParsedArguments parseArguments(const std::vector<std::string>& args,
     }
   }
   return parsed;
+}
+
+void requireDistinctFiles(const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<std::filesystem::path> resolved;
+  for (const auto& file : files) {
+    // Absolute and normal first: weakly_canonical leaves ".." after a missing directory.
+    std::error_code error;
+    const std::filesystem::path normal =
+        std::filesystem::absolute(file.second, error).lexically_normal();
+    const std::filesystem::path path = std::filesystem::weakly_canonical(normal, error);
+    resolved.push_back(error ? normal : path);
+  }
+  for (size_t i = 0; i < files.size(); ++i) {
+    for (size_t j = i + 1; j < files.size(); ++j) {
+      if (files[i].second.empty() || files[j].second.empty() || resolved[i] != resolved[j]) {
+        continue;
+      }
+      throw UsageError(files[i].first + " and " + files[j].first + " are the same file (" +
+                       files[j].second + "): one would overwrite the other");
+    }
+  }
 }
 
 int parseInteger(const std::string& option, const std::string& text, int minimum, int maximum) {

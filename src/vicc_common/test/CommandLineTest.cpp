@@ -39,6 +39,22 @@ TEST(CommandLine, RepeatedOptionsKeepEveryValueInOrder) {
   EXPECT_TRUE(parsed.all("scale").empty());
 }
 
+// An output that names an input (or another output), also through another spelling of the
+// path, is refused before anything is written; empty paths (options not given) are ignored.
+TEST(CommandLine, TheSameFileUnderTwoOptionsIsAUsageError) {
+  EXPECT_NO_THROW(requireDistinctFiles({{"INPUT", "a.svg"}, {"--out", "a.png"}, {"--dci", ""}}));
+  try {
+    requireDistinctFiles({{"INPUT", "dir/../a.png"}, {"--out", "./a.png"}});
+    ADD_FAILURE() << "no error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("INPUT and --out are the same file (./a.png)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(requireDistinctFiles({{"INPUT", "x"}, {"--out", "y"}, {"--report", "y"}}),
+               UsageError);
+}
+
 TEST(CommandLine, UsageErrorIsAnInvalidArgument) {
   EXPECT_THROW(parseArguments({"--nope"}, kSpecs), std::invalid_argument);
 }

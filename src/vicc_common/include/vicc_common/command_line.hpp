@@ -9,6 +9,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vicc_common::cli {
@@ -55,6 +56,11 @@ int parseInteger(const std::string& option, const std::string& text, int minimum
 /// `text` as a finite number in [minimum, maximum]; UsageError naming `option` otherwise.
 double parseNumber(const std::string& option, const std::string& text, double minimum,
                    double maximum);
+
+/// Throws UsageError naming both options when two of `files` (option name, path; empty paths
+/// ignored) are the same file, existing or not: an output would overwrite an input or another
+/// output.
+void requireDistinctFiles(const std::vector<std::pair<std::string, std::string>>& files);
 
 /// One line per option, aligned, for --help.
 std::string formatOptions(const std::vector<OptionSpec>& specs);

@@ -7,9 +7,12 @@ namespace vicc_glyphs::design {
 YamlMap::YamlMap(const YAML::Node& node, std::string path, const std::set<std::string>& allowed)
     : node_(node), path_(std::move(path)) {
   if (!node_.IsMap()) throw DesignError((path_.empty() ? "the design" : path_) + " must be a map");
+  std::set<std::string> seen;
   for (const auto& entry : node_) {
     const std::string name = entry.first.as<std::string>();
     if (!allowed.count(name)) throw DesignError("unknown key " + key(name));
+    // yaml-cpp keeps the first of repeated keys: the second would be silently ignored.
+    if (!seen.insert(name).second) throw DesignError("key " + key(name) + " is given twice");
   }
 }
 

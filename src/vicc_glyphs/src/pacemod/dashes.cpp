@@ -121,8 +121,18 @@ std::vector<CurveDashReport> applyDashes(DiffusionCurveImage& image, const std::
     std::vector<ColorPoint>& inner = inside_is_right ? curve.right_colors : curve.left_colors;
     const Color inner_color = meanColor(inner);
     const ChainArcLength table(curve);
+    const double dash_px = table.totalLength() / (2.0 * spec.count);
+    // Shorter than a pixel (or than its two hard transitions) a dash is not drawn: the contour
+    // would read as undashed, another level. As for waves, an error instead of such a glyph.
+    const double shortest_px = std::max(1.0, 2.0 * spec.transition_mm * px_per_mm);
+    if (dash_px < shortest_px) {
+      throw std::invalid_argument("dashes: " + std::to_string(spec.count) + " dashes on curve " +
+                                  std::to_string(index) + " would be " + std::to_string(dash_px) +
+                                  " px long, shorter than " + std::to_string(shortest_px) +
+                                  " px (fewer dashes or a larger glyph)");
+    }
     report.dashes = spec.count;
-    report.dash_length_mm = table.totalLength() / (2.0 * spec.count) / px_per_mm;
+    report.dash_length_mm = dash_px / px_per_mm;
     inner = dashedColors(inner, table, spec.count, spec.transition_mm * px_per_mm, spec.color);
     if (spec.barrier_offset_mm > 0.0) {
       const Polyline isoline = offsetIsoline(line, -spec.barrier_offset_mm * px_per_mm);

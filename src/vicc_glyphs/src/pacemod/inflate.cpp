@@ -143,6 +143,10 @@ std::vector<CurveInflateReport> inflateCurves(DiffusionCurveImage& image,
     report.area_before_mm2 = std::abs(polylineArea(line)) / (px_per_mm * px_per_mm);
     if (!isClosedPolyline(line)) {
       report.skipped = "not a closed curve";
+    } else if (offset_mm == 0.0) {
+      // The curve as it is: a re-fit of its isoline would move it by up to a few tenths of a
+      // pixel and average its side colours.
+      report.area_after_mm2 = report.area_before_mm2;
     } else {
       const double offset_px = offset_mm * px_per_mm;
       const double reach = offset_px + kClearancePx * (1 << kClearanceTries);

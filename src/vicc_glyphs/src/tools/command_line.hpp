@@ -12,6 +12,7 @@ using vicc_common::cli::parseArguments;
 using vicc_common::cli::ParsedArguments;
 using vicc_common::cli::parseInteger;
 using vicc_common::cli::parseNumber;
+using vicc_common::cli::requireDistinctFiles;
 using vicc_common::cli::UsageError;
 
 }  // namespace vicc_glyphs::tools

@@ -53,6 +53,8 @@ int runDesignCommand(const std::vector<std::string>& args, std::ostream& out, st
                           design::kMaxGlyphPixels);
     if (parsed.has("model")) model_path = parsed.value("model");
     dci = parsed.value("dci");
+    requireDistinctFiles(
+        {{"DESIGN", design_path}, {"--model", model_path}, {"--out", output}, {"--dci", dci}});
   } catch (const UsageError& e) {
     err << "vicc_glyph design: " << e.what() << "\n\n";
     printUsage(err);

@@ -107,6 +107,10 @@ ModifyRequest parseModifyRequest(const std::vector<std::string>& args) {
   if (request.output.empty()) throw UsageError("missing --out OUT.png");
   request.dci = parsed.value("dci");
   request.report = parsed.value("report");
+  requireDistinctFiles({{"INPUT", request.input},
+                        {"--out", request.output},
+                        {"--dci", request.dci},
+                        {"--report", request.report}});
   if (parsed.has("size")) {
     request.size = parseInteger("size", parsed.value("size"), design::kMinGlyphPixels, kMaxSize);
   }

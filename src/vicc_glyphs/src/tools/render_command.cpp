@@ -137,6 +137,7 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
     }
     dci = parsed.value("dci");
     report = parsed.has("report");
+    requireDistinctFiles({{"INPUT", input}, {"--out", output}, {"--dci", dci}});
   } catch (const UsageError& e) {
     err << "vicc_glyph render: " << e.what() << "\n\n";
     printUsage(err);

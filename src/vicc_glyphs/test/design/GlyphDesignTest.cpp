@@ -105,6 +105,9 @@ TEST(GlyphDesign, ErrorsNameTheKey) {
   EXPECT_NE(errorOf(fill).find("colors[1] must be an RRGGBB colour"), std::string::npos)
       << errorOf(fill);
   EXPECT_NE(errorOf("- 1").find("the design must be a map"), std::string::npos);
+  EXPECT_NE(errorOf(replaced(text, "size_mm: 50", "size_mm: 50\nsize_mm: 20"))
+                .find("key size_mm is given twice"),
+            std::string::npos);
   // Flat waves show no frequency: the fixed amplitude of geometric_frequency must reach the
   // model's smallest geometric amplitude (0.1 mm at 50 mm), or every level looks the same.
   const std::string flat =

@@ -114,6 +114,8 @@ TEST_F(ModifyCliTest, BadParametersExitWithAMessageNamingThem) {
       {"--frequency 3 --amplitude 1e6", 1, "amplitude_mm"},
       {"--inflate 1e9", 1, "inflate offset"},
       {"--inflate -13", 1, "inflate offset"},
+      // Dashes shorter than a pixel were drawn as an undashed contour (another level).
+      {"--dashes 2000 --dash-color 123456", 1, "dashes on curve 0 would be"},
   };
   for (const Case& c : cases) {
     const ToolRun r = run(base + c.args);

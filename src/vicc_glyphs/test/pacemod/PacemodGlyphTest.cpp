@@ -253,6 +253,12 @@ TEST(PacemodGlyphTest, InflatingGrowsTheRegionByTheOffset) {
   // Beyond a quarter of the glyph's width an offset is refused before anything is changed.
   EXPECT_THROW(inflateCurves(image, {0}, -40.0, 50.0), std::invalid_argument);
   EXPECT_THROW(inflateCurves(image, {0}, 12.6, 50.0), std::invalid_argument);
+  // Offset 0 leaves the curve as it is (a re-fit of its isoline moved it a little).
+  DiffusionCurveImage unchanged = loadDiffusionCurves(kIcons + "water.svg", 256);
+  const std::vector<CurveInflateReport> zero = inflateCurves(unchanged, {0}, 0.0, 50.0);
+  EXPECT_TRUE(zero[0].skipped.empty());
+  EXPECT_EQ(zero[0].area_after_mm2, zero[0].area_before_mm2);
+  EXPECT_EQ(unchanged.curves[0].control_points, original.curves[0].control_points);
 }
 
 // The curve of `image` whose region's area is nearest `area` (px^2).

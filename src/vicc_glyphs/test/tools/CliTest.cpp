@@ -192,6 +192,22 @@ TEST_F(CliTest, NothingToDrawIsAnErrorNotABackgroundPicture) {
   EXPECT_NE(tiny.err.find("--size"), std::string::npos) << tiny.err;
 }
 
+// An output naming the input would destroy it (a traced PNG overwritten by its rendering).
+TEST_F(CliTest, AnOutputThatIsTheInputIsRefusedBeforeAnythingIsWritten) {
+  const fs::path input = dir_ / "square.svg";
+  fs::copy_file(data("red_square.svg"), input);
+  const auto size_before = fs::file_size(input);
+  const ToolRun render = run("render " + input.string() + " --out " + input.string());
+  EXPECT_EQ(render.exit_code, 2);
+  EXPECT_NE(render.err.find("INPUT and --out are the same file"), std::string::npos) << render.err;
+  const ToolRun modify = run("modify " + input.string() + " --out " + (dir_ / "m.png").string() +
+                             " --report " + input.string() + " --inflate 0.5");
+  EXPECT_EQ(modify.exit_code, 2);
+  EXPECT_NE(modify.err.find("INPUT and --report are the same file"), std::string::npos)
+      << modify.err;
+  EXPECT_EQ(fs::file_size(input), size_before);
+}
+
 TEST_F(CliTest, HelpSucceeds) {
   EXPECT_EQ(run("--help").exit_code, 0);
   const ToolRun help = run("render --help");
