@@ -1,6 +1,8 @@
 #include "vicc_glyphs/design/design_values.hpp"
 
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 #include "vicc_glyphs/design/glyph_design.hpp"
@@ -16,14 +18,13 @@ std::map<std::string, double> parseValueList(const std::string& text) {
       throw DesignValueError("value '" + item + "' must be name=number");
     }
     const std::string name = item.substr(0, equals), number = item.substr(equals + 1);
-    size_t used = 0;
-    double value = NAN;
-    try {
-      value = std::stod(number, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != number.size()) {
+    // Decimal numbers only: strtod would also take leading blanks and hexadecimal ("0x55"),
+    // and std::stod refuses a number too small for a normal double (1e-320) as if it were none.
+    char* end = nullptr;
+    const double value = std::strtod(number.c_str(), &end);
+    const bool decimal = !number.empty() && !std::isspace(static_cast<unsigned char>(number[0])) &&
+                         number.find_first_of("xX") == std::string::npos;
+    if (!decimal || end != number.c_str() + number.size()) {
       throw DesignValueError(name + " = '" + number + "' is not a number");
     }
     if (!values.emplace(name, value).second) throw DesignValueError(name + " is given twice");

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include "design_yaml.hpp"
@@ -296,8 +297,9 @@ std::vector<int> GlyphDesign::levelsFor(const std::map<std::string, double>& val
     const double value = found->second;
     if (std::isnan(value)) throw DesignValueError(variable.name + " is NaN");
     if (value < variable.lower || value > variable.upper) {
-      std::ostringstream text;
-      text << variable.name << " = " << value << " is outside its domain [" << variable.lower
+      std::ostringstream text;  // enough digits that a value just outside does not print inside
+      text << std::setprecision(15) << variable.name << " = " << value
+           << " is outside its domain [" << variable.lower
            << ", " << variable.upper << "]";
       throw DesignValueError(text.str());
     }

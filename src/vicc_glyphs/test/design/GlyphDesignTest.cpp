@@ -182,6 +182,9 @@ TEST(GlyphDesign, BadValuesNameTheVariable) {
   EXPECT_NE(message({{"p", std::nan("")}}).find("p is NaN"), std::string::npos);
   EXPECT_NE(message({{"p", 101.0}}).find("p = 101 is outside its domain [0, 100]"),
             std::string::npos);
+  // Printed with enough digits not to read as inside the domain.
+  EXPECT_NE(message({{"p", 100.0000001}}).find("p = 100.0000001 is outside"), std::string::npos)
+      << message({{"p", 100.0000001}});
   EXPECT_NE(message({}).find("missing value for 'p'"), std::string::npos);
   EXPECT_NE(message({{"p", 1.0}, {"q", 1.0}}).find("no variable 'q'"), std::string::npos);
 }
@@ -199,4 +202,9 @@ TEST(DesignValues, ParsesListsAndNamesBadEntries) {
   } catch (const DesignValueError& e) {
     EXPECT_NE(std::string(e.what()).find("amount = 'lots' is not a number"), std::string::npos);
   }
+  // A number too small for a normal double is still a number; hexadecimal and leading blanks
+  // are not decimal numbers.
+  EXPECT_EQ(parseValueList("p=1e-320").at("p"), 1e-320);
+  EXPECT_THROW(parseValueList("p=0x55"), DesignValueError);
+  EXPECT_THROW(parseValueList("p= 5"), DesignValueError);
 }
