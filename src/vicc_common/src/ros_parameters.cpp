@@ -1,6 +1,8 @@
 #include "vicc_common/ros_parameters.hpp"
 
 #include <algorithm>
+#include <iomanip>
+#include <sstream>
 
 #include <ros/console.h>
 #include <ros/param.h>
@@ -15,8 +17,11 @@ std::string describeRosParameter(const ros::NodeHandle& nh, const std::string& n
       return std::string("'") + (static_cast<bool>(value) ? "true" : "false") + "'";
     case XmlRpc::XmlRpcValue::TypeInt:
       return "'" + std::to_string(static_cast<int>(value)) + "'";
-    case XmlRpc::XmlRpcValue::TypeDouble:
-      return "'" + std::to_string(static_cast<double>(value)) + "'";
+    case XmlRpc::XmlRpcValue::TypeDouble: {
+      std::ostringstream text;  // shortest form with 15 digits: 2.5, 99999999999, 1e-07
+      text << std::setprecision(15) << static_cast<double>(value);
+      return "'" + text.str() + "'";
+    }
     case XmlRpc::XmlRpcValue::TypeString:
       return "'" + static_cast<std::string>(value) + "'";
     case XmlRpc::XmlRpcValue::TypeArray:

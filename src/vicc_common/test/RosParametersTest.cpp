@@ -53,6 +53,9 @@ TEST(RosParameters, KeysLeftOutKeepTheirDefaults) {
 TEST(RosParameters, WrongTypesNameTheParameterAndTheExpectedType) {
   EXPECT_EQ(errorOf("wrong_int"), "parameter " + privateName("wrong_int/count") +
                                       " has the wrong type: expected an integer, got 'many'");
+  // roscpp's getParam(int&) would round 2.5 to 3 and accept it.
+  EXPECT_EQ(errorOf("fractional_int"), "parameter " + privateName("fractional_int/count") +
+                                           " has the wrong type: expected an integer, got '2.5'");
   EXPECT_EQ(errorOf("wrong_double"), "parameter " + privateName("wrong_double/inner/gain") +
                                          " has the wrong type: expected a number, got 'fast'");
   EXPECT_EQ(errorOf("wrong_list"), "parameter " + privateName("wrong_list/inner/levels") +

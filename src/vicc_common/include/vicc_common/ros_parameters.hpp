@@ -8,6 +8,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <ros/node_handle.h>
@@ -63,6 +64,18 @@ class RosParameterReader {
  private:
   template <typename T>
   void readPlain(const char* key, T& field) const {
+    if constexpr (std::is_same_v<T, int>) {
+      // roscpp's getParam(int&) rounds a double (2.5 -> 3) and wraps one beyond int's range:
+      // an integer parameter must be an XML-RPC integer.
+      XmlRpc::XmlRpcValue raw;
+      if (nh_.getParam(key, raw) && raw.getType() == XmlRpc::XmlRpcValue::TypeInt) {
+        field = static_cast<int>(raw);
+        return;
+      }
+      throw std::invalid_argument("parameter " + nh_.resolveName(key) +
+                                  " has the wrong type: expected " + expectedTypeName<T>() +
+                                  ", got " + describeRosParameter(nh_, key));
+    }
     T value{};
     if (!nh_.getParam(key, value)) {
       throw std::invalid_argument("parameter " + nh_.resolveName(key) +
