@@ -298,9 +298,8 @@ std::vector<int> GlyphDesign::levelsFor(const std::map<std::string, double>& val
     if (std::isnan(value)) throw DesignValueError(variable.name + " is NaN");
     if (value < variable.lower || value > variable.upper) {
       std::ostringstream text;  // enough digits that a value just outside does not print inside
-      text << std::setprecision(15) << variable.name << " = " << value
-           << " is outside its domain [" << variable.lower
-           << ", " << variable.upper << "]";
+      text << std::setprecision(15) << variable.name << " = " << value << " is outside its domain ["
+           << variable.lower << ", " << variable.upper << "]";
       throw DesignValueError(text.str());
     }
     levels.push_back(levelOf(variable, value));
