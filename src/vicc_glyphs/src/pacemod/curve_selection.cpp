@@ -28,6 +28,8 @@ CurveSelection CurveSelection::parse(const std::string& text) {
   std::string item;
   while (std::getline(stream, item, ',')) selection.indices.push_back(parseIndex(item));
   if (selection.indices.empty()) throw std::invalid_argument("empty curve list");
+  // getline drops an empty last item: "0," would pass where ",0" does not.
+  if (text.back() == ',') throw std::invalid_argument("curve list '" + text + "' ends with ','");
   return selection;
 }
 

@@ -293,7 +293,8 @@ int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out,
       stamp(map, bgr, layout.centres[i], rows[i].label);
     }
     writePng8(map, ChannelOrder::kBgr, output);
-    out << "wrote " << output << " (" << rows.size() << " glyphs)\n";
+    out << "wrote " << output << " (" << rows.size()
+        << (rows.size() == 1 ? " glyph)\n" : " glyphs)\n");
   } catch (const std::exception& e) {
     err << "vicc_glyph design-map: " << e.what() << "\n";
     return 1;

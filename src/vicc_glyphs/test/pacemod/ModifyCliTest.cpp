@@ -116,6 +116,9 @@ TEST_F(ModifyCliTest, BadParametersExitWithAMessageNamingThem) {
       {"--inflate -13", 1, "inflate offset"},
       // Dashes shorter than a pixel were drawn as an undashed contour (another level).
       {"--dashes 2000 --dash-color 123456", 1, "dashes on curve 0 would be"},
+      // At the limit (a quarter of the glyph) the heart was clipped at the frame (94 % black).
+      {"--inflate 12.5", 1, "carries curve 0 out of the 64 x 64 px image"},
+      {"--curves 0, --inflate 1", 2, "--curves"},
   };
   for (const Case& c : cases) {
     const ToolRun r = run(base + c.args);

@@ -189,6 +189,8 @@ TEST(PacemodGlyphTest, OuterSelectsTheContoursNotEnclosedByOthers) {
   EXPECT_EQ(selectCurves(donut, CurveSelection::parse("1,0,1")), (std::vector<int>{0, 1}));
   EXPECT_THROW(selectCurves(donut, CurveSelection::parse("2")), std::invalid_argument);
   EXPECT_THROW(CurveSelection::parse("1,x"), std::invalid_argument);
+  EXPECT_THROW(CurveSelection::parse("0,"), std::invalid_argument);  // as ",0" is
+  EXPECT_THROW(CurveSelection::parse(",0"), std::invalid_argument);
   EXPECT_THROW(CurveSelection::parse(""), std::invalid_argument);
 }
 
