@@ -34,7 +34,7 @@ void printUsage(std::ostream& out) {
 }  // namespace
 
 int runDesignCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  std::string design_path, values, output, dci, model_path = defaultPerceptionModelPath();
+  std::string design_path, values, output, dci, model_path;  // model: empty for the default
   int size = 0;
   try {
     const ParsedArguments parsed = parseArguments(args, designOptions());
@@ -61,7 +61,8 @@ int runDesignCommand(const std::vector<std::string>& args, std::ostream& out, st
     return 2;
   }
   try {
-    const perception::PerceptionModel model = perception::loadPerceptionModel(model_path);
+    const perception::PerceptionModel model =
+        perception::loadPerceptionModel(perceptionModelPathOrDefault(model_path));
     const design::GlyphDesign glyph = design::loadDesign(design_path, model);
     const std::vector<int> levels = glyph.levelsFor(design::parseValueList(values));
     const DiffusionCurveImage image = design::buildGlyph(glyph, levels, model, size);

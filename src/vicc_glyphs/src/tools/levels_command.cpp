@@ -55,7 +55,7 @@ void printVariable(const PerceptionModel& model, VisualVariable which, double si
 }  // namespace
 
 int runLevelsCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  std::string model_path = defaultPerceptionModelPath();
+  std::string model_path;  // empty: the default model, found below
   double size_mm = 0.0;
   Waveform waveform = Waveform::Sine;
   try {
@@ -79,7 +79,7 @@ int runLevelsCommand(const std::vector<std::string>& args, std::ostream& out, st
     return 2;
   }
   try {
-    const PerceptionModel model = loadPerceptionModel(model_path);
+    const PerceptionModel model = loadPerceptionModel(perceptionModelPathOrDefault(model_path));
     if (size_mm == 0.0) size_mm = model.reference_size_mm;
     out << std::fixed << std::setprecision(3) << "glyph size " << size_mm << " mm (scale "
         << size_mm / model.reference_size_mm << " of the " << model.reference_size_mm

@@ -22,12 +22,4 @@ std::string perceptionModelPathOrDefault(const std::string& given, const std::st
   return given.empty() ? findDefaultPerceptionModel(option) : given;
 }
 
-std::string defaultPerceptionModelPath() {
-  try {
-    return findDefaultPerceptionModel();
-  } catch (const std::exception& e) {
-    return std::string("<") + e.what() + ">";
-  }
-}
-
 }  // namespace vicc_glyphs::tools

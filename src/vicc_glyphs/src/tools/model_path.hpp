@@ -16,10 +16,4 @@ std::string findDefaultPerceptionModel(const std::string& option = "model");
 std::string perceptionModelPathOrDefault(const std::string& given,
                                          const std::string& option = "model");
 
-/// findDefaultPerceptionModel for callers that take the default before parsing their options.
-/// Never throws: when the default model is missing it returns a name that no file has, the
-/// not-found message in angle brackets, so that --help and --model still work and loading
-/// the default fails with that message.
-std::string defaultPerceptionModelPath();
-
 }  // namespace vicc_glyphs::tools
