@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "vicc_glyphs/render/pixel_buffer.hpp"
 
@@ -72,8 +73,11 @@ NearestCurvePoint::NearestCurvePoint(const std::vector<std::vector<Point2>>& pol
     }
     if (!line.empty()) mark(line.back());
   }
-  if (cv::countNonZero(b.mask) == 0)
-    throw std::invalid_argument("NearestCurvePoint: no curve points");
+  if (cv::countNonZero(b.mask) == 0) {
+    throw std::invalid_argument("no curve of the image comes near its " + std::to_string(width) +
+                                " x " + std::to_string(height) +
+                                " px frame: there is nothing to modify");
+  }
   if (method == FeatureTransform::Maurer) {
     render_detail::reserveWithHugePages(b.feature, cells);
     render_detail::reserveWithHugePages(b.row_feature, cells);

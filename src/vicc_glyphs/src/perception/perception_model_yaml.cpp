@@ -16,9 +16,12 @@ class MapReader {
   MapReader(const YAML::Node& node, std::string path, std::set<std::string> allowed)
       : node_(node), path_(std::move(path)) {
     if (!node_.IsMap()) throw ModelFileError(where() + " must be a map");
+    std::set<std::string> seen;
     for (const auto& entry : node_) {
       const std::string key = entry.first.as<std::string>();
       if (!allowed.count(key)) throw ModelFileError("unknown key " + child(key));
+      // yaml-cpp keeps the first of repeated keys: the second would be silently ignored.
+      if (!seen.insert(key).second) throw ModelFileError("key " + child(key) + " is given twice");
     }
   }
 

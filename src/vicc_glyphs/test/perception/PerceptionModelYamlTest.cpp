@@ -58,6 +58,10 @@ TEST(PerceptionModelYaml, ErrorsNameTheKey) {
   EXPECT_NE(errorOf(replaced(text, "sawtooth: {k: 1.0", "zigzag: {k: 1.0"))
                 .find("unknown key variables.geometric_amplitude.waveform_calibration.zigzag"),
             std::string::npos);
+  const std::string twice = replaced(text, "b: 1.0604,", "b: 1.0604, b: 2,");
+  EXPECT_NE(errorOf(twice).find("key variables.geometric_amplitude.stevens.b is given twice"),
+            std::string::npos)
+      << errorOf(twice);
   EXPECT_NE(errorOf("variables: [1, 2"), "");
   EXPECT_NE(errorOf("").find("the model file must be a map"), std::string::npos);
 }

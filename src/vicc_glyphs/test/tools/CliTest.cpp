@@ -185,6 +185,14 @@ TEST_F(CliTest, NothingToDrawIsAnErrorNotABackgroundPicture) {
   EXPECT_EQ(modify.exit_code, 1);
   EXPECT_NE(modify.err.find("nothing to draw"), std::string::npos) << modify.err;
   EXPECT_FALSE(fs::exists(png));
+  // Curves that all miss the frame: nothing to modify (it used to say "NearestCurvePoint: no
+  // curve points").
+  const ToolRun missed = run("modify " + outside.string() + " --out " + png.string() +
+                             " --size 64 --frequency 4 --amplitude 0.5");
+  EXPECT_EQ(missed.exit_code, 1);
+  EXPECT_NE(missed.err.find("no curve of the image comes near its 64 x 64 px frame"),
+            std::string::npos)
+      << missed.err;
   // Glyphs narrower than 16 px cannot show their waves: modify refuses them.
   const ToolRun tiny = run("modify " + data("red_square.svg") + " --out " + png.string() +
                            " --size 8 --frequency 4 --amplitude 0.5");
