@@ -132,16 +132,19 @@ double BSplineCurve::clampToDomain(double u) const {
   return std::clamp(u, domainBegin(), domainEnd());
 }
 
-int BSplineCurve::findSpan(double u) const {
-  const double v = clampToDomain(u);
-  const int n = controlPointCount() - 1;
-  if (v >= domainEnd()) {
+int knotSpan(const std::vector<double>& knots, int control_point_count, double v) {
+  const int n = control_point_count - 1;
+  if (v >= knots[n + 1]) {
     int l = n;
-    while (knots_[l] == knots_[l + 1]) --l;  // terminates: the domain is not empty
+    while (knots[l] == knots[l + 1]) --l;  // terminates: the domain is not empty
     return l;
   }
-  const auto upper = std::upper_bound(knots_.begin(), knots_.begin() + n + 2, v);
-  return static_cast<int>(upper - knots_.begin()) - 1;
+  const auto upper = std::upper_bound(knots.begin(), knots.begin() + n + 2, v);
+  return static_cast<int>(upper - knots.begin()) - 1;
+}
+
+int BSplineCurve::findSpan(double u) const {
+  return knotSpan(knots_, controlPointCount(), clampToDomain(u));
 }
 
 int BSplineCurve::nextSpan(double v, int span) const {

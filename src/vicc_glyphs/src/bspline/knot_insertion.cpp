@@ -39,25 +39,11 @@ class InPlaceRefinement {
   BSplineCurve curve() && { return BSplineCurve(degree_, std::move(knots_), std::move(points_)); }
 
  private:
-  // BSplineCurve::findSpan of u (inside the domain): l with t_l <= u < t_{l+1}, or the last
-  // non-empty span at the domain's end.
-  int spanOf(double u) const {
-    const int n = static_cast<int>(points_.size()) - 1;
-    if (u >= knots_[n + 1]) {
-      int l = n;
-      while (knots_[l] == knots_[l + 1]) --l;
-      return l;
-    }
-    return static_cast<int>(std::upper_bound(knots_.begin(), knots_.begin() + n + 2, u) -
-                            knots_.begin()) -
-           1;
-  }
-
   // One Boehm step (Eq. 2.41 with r = 1): the p - 1 de Boor points d_{l-p+1} .. d_{l-1} are
   // replaced by p points on the control polygon, l = spanOf(u).
   void insertOnce(double u) {
     const int p = degree_;
-    const int span = spanOf(u);
+    const int span = knotSpan(knots_, static_cast<int>(points_.size()), u);
     replaced_.clear();
     for (int i = span - p + 1; i <= span; ++i) {
       const double alpha = (u - knots_[i]) / (knots_[i + p] - knots_[i]);

@@ -10,6 +10,7 @@
 #include "command_line.hpp"
 #include "model_path.hpp"
 #include "vicc_glyphs/design/design_builder.hpp"
+#include "vicc_glyphs/design/design_values.hpp"
 #include "vicc_glyphs/io/png_codec.hpp"
 #include "vicc_glyphs/perception/perception_model_yaml.hpp"
 #include "vicc_glyphs/render/png_output.hpp"
@@ -78,15 +79,10 @@ std::vector<std::string> splitCsv(const std::string& line) {
 // A finite number in [low, high]; the error names the line and the column.
 double cellNumber(const std::string& text, const std::string& where, const std::string& column,
                   double low = -HUGE_VAL, double high = HUGE_VAL) {
-  size_t used = 0;
-  double value = NAN;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
+  const std::optional<double> parsed = design::parseDecimal(text);
   const std::string cell = where + ", column " + column + ": '" + text + "'";
-  if (used == 0 || used != text.size()) throw std::runtime_error(cell + " is not a number");
+  if (!parsed) throw std::runtime_error(cell + " is not a number");
+  const double value = *parsed;
   if (!std::isfinite(value)) throw std::runtime_error(cell + " is not a finite number");
   if (value < low || value > high) {
     std::ostringstream range;

@@ -24,6 +24,11 @@ struct CubicBasisRow {
   Eigen::Vector4d values = Eigen::Vector4d::Zero();
 };
 
+/// The knot span of v within the domain of a curve with `control_point_count` de Boor points
+/// and `knots`: l with t_l <= v < t_{l+1}, or at the domain's end its last non-empty span.
+/// BSplineCurve::findSpan after clamping; also for knot vectors being refined in place.
+int knotSpan(const std::vector<double>& knots, int control_point_count, double v);
+
 class BSplineCurve {
  public:
   /// Validates and stores the curve. Throws std::invalid_argument with a reason when the degree
