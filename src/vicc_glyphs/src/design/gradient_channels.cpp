@@ -1,6 +1,7 @@
 #include "gradient_channels.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 #include "vicc_glyphs/pacemod/dashes.hpp"
@@ -10,12 +11,17 @@
 namespace vicc_glyphs::design {
 namespace {
 
-// Mean colour of a side's colour points (the thesis assumes homogeneous regions, 6.2.3.1).
-Color meanColor(const std::vector<ColorPoint>& points) {
-  if (points.empty()) return Color::Zero();
-  Color sum = Color::Zero();
-  for (const ColorPoint& p : points) sum += p.rgb;
-  return sum / static_cast<double>(points.size());
+// The colour of a contour's enclosed side: the one that covered most of it (the thesis assumes
+// homogeneous regions, 6.2.3.1; a mean would mix in a neighbour's colour the side recorded).
+Color insideColor(const DiffusionCurve& contour, int index) {
+  const bool left_inside = enclosedSideIsLeft(contour);
+  const std::optional<Color> color =
+      dominantColor(left_inside ? contour.left_colors : contour.right_colors);
+  if (!color || !(left_inside ? contour.left_emits : contour.right_emits)) {
+    throw std::invalid_argument("curve " + std::to_string(index) +
+                                " has no colour on its inside for a band or a dashed centre");
+  }
+  return *color;
 }
 
 std::vector<ColorPoint> constantColor(const Color& rgb, double end) {
@@ -72,7 +78,7 @@ void addContourBand(DiffusionCurveImage& image, int index, ContourInsets& insets
   const bool left_inside = enclosedSideIsLeft(contour);
   std::vector<ColorPoint>& contour_inside =
       left_inside ? contour.left_colors : contour.right_colors;
-  const Color inner = meanColor(contour_inside);
+  const Color inner = insideColor(contour, index);
   const Color band = scaledValueAndSaturation(inner, value_factor, saturation_factor);
   contour_inside = constantColor(band, contour.segmentCount());
   const double end = band_edge.segmentCount();
@@ -86,8 +92,7 @@ void addDashedCentre(DiffusionCurveImage& image, int index, ContourInsets& inset
                      int dashes, const Color& color, double glyph_size_mm) {
   DiffusionCurve centre = insets.inset(image, index, inset_mm);
   const DiffusionCurve& contour = image.curves[static_cast<size_t>(index)];
-  const Color inner =
-      meanColor(enclosedSideIsLeft(contour) ? contour.left_colors : contour.right_colors);
+  const Color inner = insideColor(contour, index);
   const double end = centre.segmentCount();
   centre.left_colors = constantColor(inner, end);
   centre.right_colors = constantColor(inner, end);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "vicc_glyphs/pacemod/offset_contour.hpp"
@@ -12,12 +13,6 @@ namespace pacemod {
 namespace {
 
 constexpr int kMaxDashes = 10000;
-
-Color meanColor(const std::vector<ColorPoint>& points) {
-  Color sum = Color::Zero();
-  for (const ColorPoint& p : points) sum += p.rgb;
-  return points.empty() ? sum : Color(sum / points.size());
-}
 
 // Colour points of the dashed side: interval i (of 2N) is the dash colour when i is odd.
 std::vector<ColorPoint> dashedColors(const std::vector<ColorPoint>& original,
@@ -119,7 +114,14 @@ std::vector<CurveDashReport> applyDashes(DiffusionCurveImage& image, const std::
     }
     const bool inside_is_right = polylineArea(line) > 0.0;
     std::vector<ColorPoint>& inner = inside_is_right ? curve.right_colors : curve.left_colors;
-    const Color inner_color = meanColor(inner);
+    // The barrier repeats the colour that covered most of the inner side. A mean would mix in
+    // a neighbour's colour that the side recorded along a shared stretch (as inflation did).
+    const std::optional<Color> inner_color = dominantColor(inner);
+    if (!inner_color || !(inside_is_right ? curve.right_emits : curve.left_emits)) {
+      report.skipped = "its inner side emits no colour to dash";
+      reports.push_back(report);
+      continue;
+    }
     const ChainArcLength table(curve);
     const double dash_px = table.totalLength() / (2.0 * spec.count);
     // Shorter than a pixel (or than its two hard transitions) a dash is not drawn: the contour
@@ -137,7 +139,7 @@ std::vector<CurveDashReport> applyDashes(DiffusionCurveImage& image, const std::
     if (spec.barrier_offset_mm > 0.0) {
       const Polyline isoline = offsetIsoline(line, -spec.barrier_offset_mm * px_per_mm);
       if (isoline.size() >= 5) {
-        image.curves.push_back(barrierCurve(isoline, inside_is_right, inner_color));
+        image.curves.push_back(barrierCurve(isoline, inside_is_right, *inner_color));
         report.barrier_curve = static_cast<int>(image.curves.size()) - 1;
       }
     }

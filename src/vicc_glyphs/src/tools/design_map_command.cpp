@@ -263,6 +263,8 @@ int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out,
                        std::to_string(3 * glyph_size) + ")");
     }
     if (parsed.has("model")) model_path = parsed.value("model");
+    requireDistinctFiles(
+        {{"DESIGN", design_path}, {"--table", table}, {"--model", model_path}, {"--out", output}});
   } catch (const UsageError& e) {
     err << "vicc_glyph design-map: " << e.what() << "\n\n";
     printUsage(err);

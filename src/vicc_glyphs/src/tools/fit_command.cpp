@@ -83,6 +83,7 @@ int runFitCommand(const std::vector<std::string>& args, std::ostream& out, std::
     if (parsed.has("base")) base = parsed.value("base");
     if (parsed.has("p1")) options.outliers.p1 = parseNumber("p1", parsed.value("p1"), 1e-6, 1.0);
     if (parsed.has("p2")) options.outliers.p2 = parseNumber("p2", parsed.value("p2"), 1e-6, 1.0);
+    requireDistinctFiles({{"SURVEY", survey}, {"--base", base}, {"--out", output}});
   } catch (const UsageError& e) {
     err << "vicc_glyph fit-model: " << e.what() << "\n\n";
     printUsage(err);

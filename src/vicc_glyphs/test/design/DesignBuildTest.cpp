@@ -4,6 +4,8 @@
 #include <cmath>
 #include <map>
 
+#include "../../src/design/gradient_channels.hpp"
+#include "../support/straight_chain.hpp"
 #include "shipped_designs.hpp"
 #include "vicc_glyphs/design/design_builder.hpp"
 #include "vicc_glyphs/pacemod/dashes.hpp"
@@ -239,6 +241,33 @@ TEST(DesignBuild, BandIsDarkerForARiseAndBrighterForAFall) {
   const Color fill = Color(0x14, 0x81, 0xd6) / 255.0;  // hospitalisation 3 -> ]2, 3] level
   EXPECT_LT(bandColor(15).maxCoeff(), 0.95 * fill.maxCoeff());
   EXPECT_GT(bandColor(-15).maxCoeff(), 1.05 * fill.maxCoeff());
+}
+
+// A band or a dashed centre inside a contour that gives its inside no colour would be drawn in
+// black (a colour no level has): an error naming the curve instead.
+TEST(DesignBuild, ABandOrCentreInsideAContourWithoutAnInsideColourIsAnError) {
+  DiffusionCurveImage image;
+  image.width = image.height = 100;
+  DiffusionCurve square;
+  square.control_points = vicc_glyphs::test::closedStraightChain(
+      {Point2(20, 20), Point2(80, 20), Point2(80, 80), Point2(20, 80)});
+  const double end = square.segmentCount();
+  const bool left_inside = enclosedSideIsLeft(square);
+  std::vector<ColorPoint>& outside = left_inside ? square.right_colors : square.left_colors;
+  const Color white = Color::Ones();
+  outside.push_back(ColorPoint{0.0, white});
+  outside.push_back(ColorPoint{end, white});
+  image.curves.push_back(square);
+  ContourInsets insets(50.0);
+  try {
+    addContourBand(image, 0, insets, 2.0, 0.8, 1.2);
+    ADD_FAILURE() << "no error for a band inside a contour without an inside colour";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("curve 0"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(addDashedCentre(image, 0, insets, 5.0, 4, Color(1, 0, 0), 50.0),
+               std::invalid_argument);
+  EXPECT_EQ(image.curves.size(), 1u);
 }
 
 // A level whose modification no selected curve can take would look like another level (here

@@ -129,6 +129,17 @@ TEST_F(DesignCliTest, MapRefusesAWidthThatLeavesNoRoomBetweenTheMargins) {
   EXPECT_EQ(map("A,8,50,95,1\n", "--width 384 --glyph-size 128").exit_code, 0);
 }
 
+// A map written over its table would destroy the table it was drawn from.
+TEST_F(DesignCliTest, MapRefusesAnOutputThatIsTheTable) {
+  std::ofstream(dir_ / "rows.csv") << kRainHeader << "A,8,50,95,1\n";
+  const auto size_before = std::filesystem::file_size(dir_ / "rows.csv");
+  const auto same = run("design-map " + design("rain_forecast_sine") + " --table " +
+                        (dir_ / "rows.csv").string() + " --out " + (dir_ / "rows.csv").string());
+  EXPECT_EQ(same.exit_code, 2);
+  EXPECT_NE(same.err.find("--table and --out are the same file"), std::string::npos) << same.err;
+  EXPECT_EQ(std::filesystem::file_size(dir_ / "rows.csv"), size_before);
+}
+
 TEST_F(DesignCliTest, MapIsNorthUpAndItsHeightIsBounded) {
   // 0.001 degrees of longitude over 2 of latitude: fitted to the width the map was 14 GB.
   const auto tall = map("South,10,50,95,1\nNorth,10.001,52,40,20\n");

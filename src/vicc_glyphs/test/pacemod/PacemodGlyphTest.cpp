@@ -235,6 +235,52 @@ TEST(PacemodGlyphTest, DashesAlternateAlongTheContourAndStayInABand) {
   }
 }
 
+// The barrier repeats the colour that covered most of the inner side, not a mean with a colour
+// the side recorded along a short stretch (a neighbour it touched).
+TEST(PacemodGlyphTest, TheDashBarrierTakesTheInnerSidesDominantColour) {
+  DiffusionCurveImage image = loadDiffusionCurves(kIcons + "water.svg", 256);
+  DiffusionCurve& drop = image.curves[0];
+  const bool inside_right = polylineArea(sampleCurve(drop)) > 0.0;
+  const double end = drop.segmentCount();
+  const Color blue(0.1, 0.3, 0.9), grey(0.5, 0.5, 0.5);
+  // 60 % blue, then 40 % grey over four colour points (a mean of the points would be grey-ish).
+  (inside_right ? drop.right_colors : drop.left_colors) = {{0.0, blue},       {0.6 * end, blue},
+                                                           {0.6 * end, grey}, {0.7 * end, grey},
+                                                           {0.8 * end, grey}, {end, grey}};
+  DashSpec spec;
+  spec.count = 4;
+  spec.color = Color(1, 0, 0);
+  spec.barrier_offset_mm = 2.0;
+  const std::vector<CurveDashReport> reports = applyDashes(image, {0}, spec, 50.0);
+  ASSERT_EQ(reports.size(), 1u);
+  ASSERT_EQ(reports[0].barrier_curve, 1);
+  const DiffusionCurve& barrier = image.curves[1];
+  const std::vector<ColorPoint>& emitted =
+      inside_right ? barrier.right_colors : barrier.left_colors;
+  ASSERT_FALSE(emitted.empty());
+  for (const ColorPoint& p : emitted) EXPECT_LT((p.rgb - blue).norm(), 1e-12);
+}
+
+// Dashes on a side that emits nothing would not show: the curve is reported as skipped and left
+// as it was, instead of a glyph that reads as undashed.
+TEST(PacemodGlyphTest, DashesOnASideThatEmitsNothingAreSkippedAndSaySo) {
+  DiffusionCurveImage image = loadDiffusionCurves(kIcons + "water.svg", 256);
+  DiffusionCurve& drop = image.curves[0];
+  const bool inside_right = polylineArea(sampleCurve(drop)) > 0.0;
+  (inside_right ? drop.right_emits : drop.left_emits) = false;
+  const DiffusionCurve before = drop;
+  DashSpec spec;
+  spec.count = 4;
+  spec.color = Color(1, 0, 0);
+  const std::vector<CurveDashReport> reports = applyDashes(image, {0}, spec, 50.0);
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_EQ(reports[0].dashes, 0);
+  EXPECT_NE(reports[0].skipped.find("emits no colour"), std::string::npos) << reports[0].skipped;
+  EXPECT_EQ(image.curves.size(), 1u);
+  EXPECT_EQ(image.curves[0].left_colors.size(), before.left_colors.size());
+  EXPECT_EQ(image.curves[0].right_colors.size(), before.right_colors.size());
+}
+
 TEST(PacemodGlyphTest, InflatingGrowsTheRegionByTheOffset) {
   DiffusionCurveImage image = loadDiffusionCurves(kIcons + "water.svg", 256);
   const double before = std::abs(polylineArea(sampleCurve(image.curves[0])));

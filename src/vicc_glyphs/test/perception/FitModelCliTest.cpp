@@ -71,4 +71,19 @@ TEST_F(FitModelCliTest, BadInputFailsWithAMessage) {
   const auto p1 =
       vicc_glyphs::test::runTool("fit-model " + csv.string() + " --out x.yaml --p1 2", dir_);
   EXPECT_EQ(p1.exit_code, 2);
+  // A model written over its survey or its base model would destroy them.
+  const auto size_before = std::filesystem::file_size(csv);
+  const auto over_survey =
+      vicc_glyphs::test::runTool("fit-model " + csv.string() + " --out " + csv.string(), dir_);
+  EXPECT_EQ(over_survey.exit_code, 2);
+  EXPECT_NE(over_survey.err.find("SURVEY and --out are the same file"), std::string::npos)
+      << over_survey.err;
+  EXPECT_EQ(std::filesystem::file_size(csv), size_before);
+  const auto over_base = vicc_glyphs::test::runTool("fit-model " + csv.string() + " --base " +
+                                                        (dir_ / "x" / ".." / "b.yaml").string() +
+                                                        " --out " + (dir_ / "b.yaml").string(),
+                                                    dir_);
+  EXPECT_EQ(over_base.exit_code, 2);
+  EXPECT_NE(over_base.err.find("--base and --out are the same file"), std::string::npos)
+      << over_base.err;
 }
