@@ -111,11 +111,15 @@ class Multigrid {
             coarse_[l - 1], l, [f](size_t p) { return f[p]; }, f_[l + 1].data());
       }
       solveCoarsest(u_[coarsest].data(), f_[coarsest].data());
+      next_to_finest_cycles_ = 0;
       for (int l = coarsest - 1; l >= 1; --l) {
         prolong<false>(l, u_[l + 1].data(), u_[l].data());
-        const int cycles = l == 1 ? options_.next_to_finest_cycles : options_.intermediate_cycles;
-        for (int k = 0; k < cycles; ++k) {
-          vcycle(l, u_[l].data(), f_[l].data(), false);
+        if (l == 1) {
+          cycleNextToFinest();
+        } else {
+          for (int k = 0; k < options_.intermediate_cycles; ++k) {
+            vcycle(l, u_[l].data(), f_[l].data(), false);
+          }
         }
       }
       prolong<true>(0, u_[1].data(), u_[0].data());
@@ -125,6 +129,7 @@ class Multigrid {
     if (report) {
       report->levels = levelCount();
       report->fine_cycles = progress.iterations;
+      report->next_to_finest_cycles = coarsest > 1 ? next_to_finest_cycles_ : 0;
       report->converged = progress.converged;
       report->stopped_at_float_resolution = progress.at_float_resolution;
       report->residuals = std::move(progress.residuals);
@@ -136,6 +141,31 @@ class Multigrid {
 
  private:
   int levelCount() const { return static_cast<int>(coarse_.size()) + 1; }
+
+  // FMG's V-cycles on level 1, and one more when the last one still moved the solution by more
+  // than `extra_next_to_finest_cycle_above` tolerances: the finest level's start is only as
+  // good as this solve (with a fixed iteration count, no tolerance, never).
+  void cycleNextToFinest() {
+    const int cycles = options_.next_to_finest_cycles;
+    const double above = options_.tolerance * options_.extra_next_to_finest_cycle_above;
+    Field& u = u_[1];
+    for (int k = 0; k < cycles; ++k) {
+      if (above > 0.0 && k + 1 == cycles) before_last_cycle_ = u;
+      vcycle(1, u.data(), f_[1].data(), false);
+    }
+    next_to_finest_cycles_ = cycles;
+    if (above > 0.0 && cycles > 0 && largestChange(u, before_last_cycle_) > above) {
+      vcycle(1, u.data(), f_[1].data(), false);
+      ++next_to_finest_cycles_;
+    }
+  }
+
+  // The largest magnitude of after - before over the points and channels.
+  static double largestChange(const Field& after, const Field& before) {
+    Px most{};
+    for (size_t i = 0; i < after.size(); ++i) most = largerMagnitude(most, after[i] - before[i]);
+    return largestChannel(most);
+  }
 
   // Sizes `field` (keeping its storage) and zeroes its ghost border, which the smoothers and
   // residuals read with weight 0 (garbage there could be NaN).
@@ -1093,6 +1123,8 @@ class Multigrid {
   size_t free_count_ = 0;
   std::vector<Field> u_, f_;        // per level: solution (FMG) or correction (V-cycle), rhs
   Field r_, z_, p_, ap_;            // CG: residual, preconditioned residual, direction, A direction
+  Field before_last_cycle_;         // level 1 before FMG's last V-cycle there
+  int next_to_finest_cycles_ = 0;   // FMG's V-cycles done on level 1
   std::vector<Px> alphas_, betas_;  // CG's step coefficients (its Lanczos matrix)
   DeflationSpace deflation_;
   cv::Mat seed_marks_, square_marks_;   // where the correction is large, and around them
@@ -1188,6 +1220,11 @@ void validate(const GridProblem& problem, const MultigridOptions& options) {
       options.next_to_finest_cycles < 0 || options.max_fine_cycles < 0 || options.fine_cycles < 0 ||
       options.local_relaxation < 0 || !(options.tolerance >= 0.0)) {
     throw std::invalid_argument("solveMultigrid: negative counts or tolerance");
+  }
+  if (!std::isfinite(options.extra_next_to_finest_cycle_above) ||
+      options.extra_next_to_finest_cycle_above < 0.0) {
+    throw std::invalid_argument(
+        "solveMultigrid: extra_next_to_finest_cycle_above must be a finite number >= 0");
   }
 }
 

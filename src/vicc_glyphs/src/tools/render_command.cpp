@@ -53,8 +53,9 @@ void printReport(const RenderResult& result, std::ostream& out) {
       << result.image.rows << "\n"
       << "time ms: total " << t.total_ms << ", assemble " << t.assemble_ms << ", solve "
       << t.solve_ms << ", antialias " << t.antialias_ms << ", blur " << t.blur_ms << "\n"
-      << "multigrid: " << report.multigrid.levels << " levels, " << report.multigrid.fine_cycles
-      << " CG iterations (V-cycles) on the finest grid"
+      << "multigrid: " << report.multigrid.levels << " levels, "
+      << report.multigrid.next_to_finest_cycles << " FMG V-cycles next to the finest grid, "
+      << report.multigrid.fine_cycles << " CG iterations (V-cycles) on the finest grid"
       << (report.multigrid.converged ? " (error tolerance reached)" : "")
       << (report.multigrid.stopped_at_float_resolution
               ? " (stopped before the count: the correction fell below float resolution)"

@@ -33,6 +33,12 @@ struct MultigridOptions {
   /// the finest level: that start is only as good as this solve, and a cycle there costs about
   /// a third of one on the finest level (with 3, most icons need no CG iteration at 512 px).
   int next_to_finest_cycles = 3;
+  /// FMG with a tolerance: one V-cycle more on the level next to the finest when the largest
+  /// update of its last one exceeded this many tolerances (0: never). Dense curves (waved
+  /// contours) leave that solve short of what the finest level's start needs, and the cycle
+  /// (about a quarter of a CG iteration) then saves the iteration; most plain icons stay
+  /// below it and pay only the measurement (see docs/rendering.md).
+  double extra_next_to_finest_cycle_above = 3.5;
   int coarsest_size = 16;         ///< coarsen until the larger side is at most this (1..64);
                                   ///< that level is solved directly
   bool record_residuals = false;  ///< record the finest level's residuals and estimates
@@ -71,6 +77,8 @@ struct MultigridOptions {
 struct MultigridReport {
   int levels = 0;
   int fine_cycles = 0;  ///< CG iterations (one V-cycle each) done on the finest level
+  /// FMG's V-cycles on the level next to the finest (next_to_finest_cycles, or one more).
+  int next_to_finest_cycles = 0;
   /// With a tolerance: whether the error estimate reached it within max_fine_cycles.
   bool converged = false;
   /// Without a tolerance (fine_cycles): whether the iterations stopped before that count
