@@ -15,6 +15,7 @@ add_library(vicc_glyphs_pacemod
   src/pacemod/polyline.cpp
   src/pacemod/polygon_crossings.cpp
   src/pacemod/curve_selection.cpp
+  src/pacemod/image_frame.cpp
   src/pacemod/sparse_fowler_bartels.cpp
   src/pacemod/contour_corners.cpp
   src/pacemod/contour_teeth.cpp
@@ -81,6 +82,7 @@ if(CATKIN_ENABLE_TESTING)
     test/pacemod/OffsetContourTest.cpp
     test/pacemod/PolylineTest.cpp
     test/pacemod/PolygonCrossingsTest.cpp
+    test/pacemod/ImageFrameTest.cpp
   )
   target_compile_options(vicc_glyphs_pacemod_test PRIVATE ${VICC_WARNINGS})
   target_compile_definitions(vicc_glyphs_pacemod_test PRIVATE

@@ -14,6 +14,7 @@
 #include "vicc_glyphs/io/orzan_xml.hpp"
 #include "vicc_glyphs/io/svg_import.hpp"
 #include "vicc_glyphs/pacemod/dashes.hpp"
+#include "vicc_glyphs/pacemod/image_frame.hpp"
 #include "vicc_glyphs/pacemod/inflate.hpp"
 #include "vicc_glyphs/pacemod/periodic_waves.hpp"
 
@@ -273,6 +274,27 @@ void applyGradientEncodings(DiffusionCurveImage& image, const std::vector<Active
   }
 }
 
+std::vector<int> allCurves(size_t count) {
+  std::vector<int> curves(count);
+  for (size_t i = 0; i < count; ++i) curves[i] = static_cast<int>(i);
+  return curves;
+}
+
+// A level whose modification reaches beyond the glyph (an inflation, waves or a scale near the
+// limits) would be clipped by the renderer: part of the encoding cut off, another level shown.
+void requireInsideFrame(const DiffusionCurveImage& before, const DiffusionCurveImage& after,
+                        const std::vector<int>& curves, const GlyphDesign& design,
+                        const std::vector<int>& levels) {
+  const std::optional<int> out = pacemod::curveCarriedOutOfFrame(before, after, curves);
+  if (!out) return;
+  std::string level_list;
+  for (int level : levels) level_list += (level_list.empty() ? "" : ",") + std::to_string(level);
+  throw std::invalid_argument("design " + design.name + ": the glyph of levels " + level_list +
+                              " carries curve " + std::to_string(*out) + " out of the " +
+                              std::to_string(after.width) + " x " + std::to_string(after.height) +
+                              " px frame, where it would be clipped");
+}
+
 // The encodings of `design` with the data levels that drive them; throws DesignValueError for
 // a wrong number of levels or one out of range.
 std::vector<Active> activeEncodings(const GlyphDesign& design, const std::vector<int>& levels) {
@@ -319,6 +341,7 @@ DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>
 DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>& levels,
                                const perception::PerceptionModel& model, DiffusionCurveImage icon) {
   const std::vector<Active> active = activeEncodings(design, levels);
+  const DiffusionCurveImage original = icon;
   DiffusionCurveImage image = std::move(icon);
   const size_t icon_curves = image.curves.size();
   std::set<int> hidden;
@@ -360,6 +383,7 @@ DiffusionCurveImage buildGlyph(const GlyphDesign& design, const std::vector<int>
     applyDashEncoding(image, a, without(pacemod::selectCurves(image, a.encoding->curves), hidden),
                       dashColor(image, a, active, design, model), design, model);
   }
+  requireInsideFrame(original, image, without(allCurves(icon_curves), hidden), design, levels);
   for (auto it = hidden.rbegin(); it != hidden.rend(); ++it) {
     if (*it < 0 || *it >= static_cast<int>(icon_curves)) {
       throw std::invalid_argument("design " + design.name + ": hidden curve " +

@@ -1,13 +1,13 @@
 #include "modify_command.hpp"
 
-#include <algorithm>
 #include <fstream>
+#include <optional>
 
 #include "modify_report.hpp"
 #include "modify_request.hpp"
 #include "vicc_glyphs/io/load.hpp"
 #include "vicc_glyphs/io/orzan_xml.hpp"
-#include "vicc_glyphs/pacemod/polyline.hpp"
+#include "vicc_glyphs/pacemod/image_frame.hpp"
 #include "vicc_glyphs/render/png_output.hpp"
 #include "vicc_glyphs/render/renderer.hpp"
 
@@ -44,33 +44,17 @@ ModifyOutcome modify(const ModifyRequest& request, DiffusionCurveImage& image) {
   return outcome;
 }
 
-// How far the sampled curve reaches beyond the image frame (pixels; <= 0 inside).
-double beyondFrame(const DiffusionCurve& curve, int width, int height) {
-  double beyond = -1e300;
-  for (const Point2& p : pacemod::sampleCurve(curve, 16)) {
-    beyond = std::max({beyond, -p.x(), -p.y(), p.x() - width, p.y() - height});
-  }
-  return beyond;
-}
-
 // A modification that carries a curve out of the frame (an inflation or amplitude near the
 // limit of a quarter of the glyph) would be clipped: part of the encoding cut off.
 void requireInsideFrame(const DiffusionCurveImage& before, const DiffusionCurveImage& after,
                         const std::vector<int>& selected) {
-  constexpr double kTolerancePx = 0.5;
-  for (int index : selected) {
-    const DiffusionCurve& modified = after.curves[static_cast<size_t>(index)];
-    if (beyondFrame(before.curves[static_cast<size_t>(index)], before.width, before.height) >
-            kTolerancePx ||
-        beyondFrame(modified, after.width, after.height) <= kTolerancePx) {
-      continue;
-    }
-    throw std::runtime_error("the modification carries curve " + std::to_string(index) +
-                             " out of the " + std::to_string(after.width) + " x " +
-                             std::to_string(after.height) +
-                             " px image, where it would be clipped (a smaller --inflate or "
-                             "--amplitude, or a larger --size-mm)");
-  }
+  const std::optional<int> out = pacemod::curveCarriedOutOfFrame(before, after, selected);
+  if (!out) return;
+  throw std::runtime_error("the modification carries curve " + std::to_string(*out) +
+                           " out of the " + std::to_string(after.width) + " x " +
+                           std::to_string(after.height) +
+                           " px image, where it would be clipped (a smaller --inflate or "
+                           "--amplitude, or a larger --size-mm)");
 }
 
 // A curve a modification left as it was must not pass unnoticed: the picture would look like a

@@ -210,18 +210,44 @@ TEST(DesignBuild, Covid19GradientGlyphAddsBandAndDashedCentre) {
                                         {"hospitalisation_change", hosp_change}}),
                       model(), 192);
   };
-  // Steady: no band, no dashes; only the centre region curve is added.
-  const DiffusionCurveImage steady = build(2000, 0, 0);  // glyph scale 1
+  // Steady: no band, no dashes; only the centre region curve is added, and the contour is the
+  // icon's scaled about the centre (the largest size, 0.95, leaves room for the waves).
+  const DiffusionCurveImage steady = build(2000, 0, 0);
   EXPECT_EQ(steady.curves.size(), 2u);
-  EXPECT_TRUE(sameGeometry(steady.curves[0], icon.curves[0]));
+  DiffusionCurve largest = icon.curves[0];
+  for (Point2& p : largest.control_points) p = Point2(96, 96) + 0.95 * (p - Point2(96, 96));
+  EXPECT_TRUE(sameGeometry(steady.curves[0], largest));
   // Rising: waved contour + band curve + centre curve + its dash barrier.
   const DiffusionCurveImage rising = build(400, 15, 30);
   EXPECT_EQ(rising.curves.size(), 4u);
   EXPECT_FALSE(sameGeometry(rising.curves[0], icon.curves[0]));
   EXPECT_EQ(validate(rising), "");
-  // Size follows the incidence (Table 6.8): glyph scale 0.6 vs 1.0.
+  // Size follows the incidence (Table 6.8): glyph scale 0.57 vs 0.95.
   const DiffusionCurveImage small = build(10, 0, 0), large = build(2000, 0, 0);
   EXPECT_NEAR(polygonArea(small.curves[0]) / polygonArea(large.curves[0]), 0.36, 0.01);
+}
+
+// A level whose modification reaches beyond the glyph would be clipped by the renderer (the
+// COVID-19 glyph's largest size with its largest waves did): building it is an error naming the
+// levels and the curve.
+TEST(DesignBuild, AGlyphCarriedOutOfItsFrameIsAnError) {
+  GlyphDesign design = shipped("covid19_gradient");
+  const std::vector<int> largest = design.levelsFor({{"incidence", 2000},
+                                                     {"hospitalisation", 3},
+                                                     {"incidence_change", 15},
+                                                     {"hospitalisation_change", 0}});
+  EXPECT_NO_THROW(buildGlyph(design, largest, model(), 192));
+  for (Encoding& encoding : design.variables[0].encodings) {
+    if (encoding.channel == Channel::GlyphScale) encoding.numbers.back() = 1.0;  // as it was
+  }
+  try {
+    buildGlyph(design, largest, model(), 192);
+    ADD_FAILURE() << "no error for a glyph carried out of its frame";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("levels 5,2,4,2 carries curve 0 out of the 192 x 192 px"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(DesignBuild, BandIsDarkerForARiseAndBrighterForAFall) {
