@@ -13,8 +13,7 @@ namespace {
 
 // The colour of a contour's enclosed side: the one that covered most of it (the thesis assumes
 // homogeneous regions, 6.2.3.1; a mean would mix in a neighbour's colour the side recorded).
-Color insideColor(const DiffusionCurve& contour, int index) {
-  const bool left_inside = enclosedSideIsLeft(contour);
+Color insideColor(const DiffusionCurve& contour, bool left_inside, int index) {
   const std::optional<Color> color =
       dominantColor(left_inside ? contour.left_colors : contour.right_colors);
   if (!color || !(left_inside ? contour.left_emits : contour.right_emits)) {
@@ -78,7 +77,7 @@ void addContourBand(DiffusionCurveImage& image, int index, ContourInsets& insets
   const bool left_inside = enclosedSideIsLeft(contour);
   std::vector<ColorPoint>& contour_inside =
       left_inside ? contour.left_colors : contour.right_colors;
-  const Color inner = insideColor(contour, index);
+  const Color inner = insideColor(contour, left_inside, index);
   const Color band = scaledValueAndSaturation(inner, value_factor, saturation_factor);
   contour_inside = constantColor(band, contour.segmentCount());
   const double end = band_edge.segmentCount();
@@ -92,7 +91,7 @@ void addDashedCentre(DiffusionCurveImage& image, int index, ContourInsets& inset
                      int dashes, const Color& color, double glyph_size_mm) {
   DiffusionCurve centre = insets.inset(image, index, inset_mm);
   const DiffusionCurve& contour = image.curves[static_cast<size_t>(index)];
-  const Color inner = insideColor(contour, index);
+  const Color inner = insideColor(contour, enclosedSideIsLeft(contour), index);
   const double end = centre.segmentCount();
   centre.left_colors = constantColor(inner, end);
   centre.right_colors = constantColor(inner, end);

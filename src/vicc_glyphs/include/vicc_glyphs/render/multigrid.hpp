@@ -36,8 +36,9 @@ struct MultigridOptions {
   /// FMG with a tolerance: one V-cycle more on the level next to the finest when the largest
   /// update of its last one exceeded this many tolerances (0: never). Dense curves (waved
   /// contours) leave that solve short of what the finest level's start needs, and the cycle
-  /// (about a quarter of a CG iteration) then saves the iteration; most plain icons stay
-  /// below it and pay only the measurement (see docs/rendering.md).
+  /// (a quarter of a CG iteration's instructions, nearer half its time) then saves the
+  /// iteration; most plain icons stay below it and pay only the measurement (see
+  /// docs/rendering.md).
   double extra_next_to_finest_cycle_above = 3.5;
   int coarsest_size = 16;         ///< coarsen until the larger side is at most this (1..64);
                                   ///< that level is solved directly
