@@ -91,6 +91,9 @@ ParsedArguments parseArguments(const std::vector<std::string>& args,
         throw UsageError("option '--" + name + "' needs a value " + spec->value_name);
       }
       const std::string value = equals != std::string::npos ? arg.substr(equals + 1) : args[++i];
+      if (!spec->repeatable && parsed.values.count(name)) {
+        throw UsageError("option '--" + name + "' is given more than once");
+      }
       parsed.values[name] = value;
       parsed.all_values[name].push_back(value);
     }

@@ -9,6 +9,7 @@ const std::vector<OptionSpec> kSpecs = {
     {"size", "PIXELS", "edge length"},
     {"scale", "FACTOR", "zoom"},
     {"json", "", "machine-readable output"},
+    {"config", "FILE", "settings, applied in order", true},
 };
 
 std::string usageErrorOf(const std::vector<std::string>& args) {
@@ -32,11 +33,19 @@ TEST(CommandLine, ParsesBothValueFormsFlagsAndPositionals) {
   EXPECT_EQ(parsed.value("missing", "fallback"), "fallback");
 }
 
-TEST(CommandLine, RepeatedOptionsKeepEveryValueInOrder) {
-  const ParsedArguments parsed = parseArguments({"--size=1", "--size", "2"}, kSpecs);
-  EXPECT_EQ(parsed.value("size"), "2");  // the last one wins for value()
-  EXPECT_EQ(parsed.all("size"), (std::vector<std::string>{"1", "2"}));
+TEST(CommandLine, RepeatableOptionsKeepEveryValueInOrder) {
+  const ParsedArguments parsed = parseArguments({"--config=a", "--config", "b"}, kSpecs);
+  EXPECT_EQ(parsed.value("config"), "b");  // the last one for value()
+  EXPECT_EQ(parsed.all("config"), (std::vector<std::string>{"a", "b"}));
   EXPECT_TRUE(parsed.all("scale").empty());
+}
+
+// Taking the last of two values would silently do something else than the first asked for.
+TEST(CommandLine, AnOptionGivenTwiceThatIsNotRepeatableIsAUsageError) {
+  EXPECT_EQ(usageErrorOf({"--size=1", "--size", "2"}), "option '--size' is given more than once");
+  EXPECT_EQ(usageErrorOf({"--size", "1", "--size", "1"}),
+            "option '--size' is given more than once");
+  EXPECT_EQ(usageErrorOf({"--json", "--json"}), "no error");  // a flag twice is the same flag
 }
 
 // An output that names an input (or another output), also through another spelling of the
@@ -108,7 +117,8 @@ TEST(CommandLine, HelpAlignsTheOptions) {
   EXPECT_EQ(formatOptions(kSpecs),
             "  --size PIXELS   edge length\n"
             "  --scale FACTOR  zoom\n"
-            "  --json          machine-readable output\n");
+            "  --json          machine-readable output\n"
+            "  --config FILE   settings, applied in order\n");
   EXPECT_EQ(helpText("tool [options] FILE", "Does a thing.", {kSpecs[2]}),
             "usage: tool [options] FILE\nDoes a thing.\noptions:\n"
             "  --json  machine-readable output\n");

@@ -84,6 +84,16 @@ TEST_F(PatientCliTest, EncodeAsJsonAndText) {
   EXPECT_NE(r.out.find("no examination at or before 2020-01-01"), std::string::npos);
 }
 
+// Two --patient options would have shown the last patient's status under a command typed for
+// the first: a usage error, nothing shown.
+TEST_F(PatientCliTest, AnOptionGivenTwiceIsRefused) {
+  ASSERT_EQ(run({"import", sample("fig4_6_patient.json")}).code, 0);
+  const Result r = run({"encode", "--patient", "OTHER-1", "--patient", "SDH-046", "--json"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("option '--patient' is given more than once"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+}
+
 TEST_F(PatientCliTest, RecordAndExportRoundTrip) {
   ASSERT_EQ(run({"import", sample("cases.json")}).code, 0);
   Result r = run({"record", sample("follow_up_examination.json")});

@@ -24,11 +24,15 @@ struct OptionSpec {
   std::string name;        ///< without the leading "--"
   std::string value_name;  ///< empty for a flag, else the placeholder shown in the help
   std::string help;
+  /// Whether the option may be given more than once (ParsedArguments::all has every value).
+  /// Any other option given twice is a UsageError: taking the last value would silently
+  /// change what a command does (another patient, another design value).
+  bool repeatable = false;
 };
 
 struct ParsedArguments {
   std::vector<std::string> positional;
-  std::map<std::string, std::string> values;  ///< the last value of each option given
+  std::map<std::string, std::string> values;  ///< each option's value (repeatable: the last)
   std::map<std::string, std::vector<std::string>> all_values;  ///< every value, in order
   std::set<std::string> flags;
 
@@ -46,8 +50,9 @@ struct ParsedArguments {
   double number(const std::string& name, double fallback, double minimum, double maximum) const;
 };
 
-/// Parses `args` against `specs`. Throws UsageError for an unknown option, a missing value or a
-/// value given to a flag. A single '-' and anything not starting with '-' is positional.
+/// Parses `args` against `specs`. Throws UsageError for an unknown option, a missing value, a
+/// value given to a flag or an option given twice that is not repeatable. A single '-' and anything
+/// not starting with '-' is positional.
 ParsedArguments parseArguments(const std::vector<std::string>& args,
                                const std::vector<OptionSpec>& specs);
 

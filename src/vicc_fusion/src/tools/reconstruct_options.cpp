@@ -13,7 +13,7 @@ namespace cli = vicc_common::cli;
 const std::vector<cli::OptionSpec> kOptionSpecs = {
     {"help", "", ""},        {"depth-topic", "T", ""},     {"info-topic", "T", ""},
     {"imu-topic", "T", ""},  {"intensity-topic", "T", ""}, {"init", "STRATEGY", ""},
-    {"levels", "N", ""},     {"config", "FILE", ""},       {"imu-noise", "FILE", ""},
+    {"levels", "N", ""},     {"config", "FILE", "", true}, {"imu-noise", "FILE", ""},
     {"frame-step", "N", ""}, {"trajectory", "OUT", ""},    {"cloud", "OUT", ""},
     {"mesh", "OUT", ""},     {"frame-to-frame", "", ""},   {"no-fusion", "", ""},
     {"report", "OUT", ""},   {"gt", "TRUTH", ""},          {"truth-surface", "SURFACE", ""},
