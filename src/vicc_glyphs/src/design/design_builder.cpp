@@ -17,6 +17,7 @@
 #include "vicc_glyphs/pacemod/image_frame.hpp"
 #include "vicc_glyphs/pacemod/inflate.hpp"
 #include "vicc_glyphs/pacemod/periodic_waves.hpp"
+#include "vicc_glyphs/pacemod/skipped_curves.hpp"
 
 namespace vicc_glyphs::design {
 namespace {
@@ -125,21 +126,18 @@ pacemod::Waveform pacemodWaveform(perception::Waveform waveform) {
   return *pacemod::parseWaveform(perception::toString(waveform));
 }
 
-// Geometric frequency and amplitude on the same curves form one wave; alone, the other wave
-// parameter is the encoding's fixed value.
 // A value no selected curve can show would pass for another level (a glyph without waves reads
 // as the lowest frequency): the design's modification must land on at least one curve.
 template <class Reports>
 void requireShown(const Reports& reports, const std::string& what) {
-  if (reports.empty()) return;
-  for (const auto& report : reports) {
-    if (report.skipped.empty()) return;
+  const std::string reason = pacemod::nothingModifiedReason(reports);
+  if (!reason.empty()) {
+    throw std::invalid_argument(what + " cannot be drawn on any selected curve (" + reason + ")");
   }
-  throw std::invalid_argument(what + " cannot be drawn on any selected curve (curve " +
-                              std::to_string(reports.front().curve) + ": " +
-                              reports.front().skipped + ")");
 }
 
+// Geometric frequency and amplitude on the same curves form one wave; alone, the other wave
+// parameter is the encoding's fixed value.
 void applyWaveEncodings(DiffusionCurveImage& image, const std::vector<Active>& active,
                         const GlyphDesign& design, const perception::PerceptionModel& model) {
   std::set<size_t> used;

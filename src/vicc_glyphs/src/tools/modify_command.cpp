@@ -8,6 +8,7 @@
 #include "vicc_glyphs/io/load.hpp"
 #include "vicc_glyphs/io/orzan_xml.hpp"
 #include "vicc_glyphs/pacemod/image_frame.hpp"
+#include "vicc_glyphs/pacemod/skipped_curves.hpp"
 #include "vicc_glyphs/render/png_output.hpp"
 #include "vicc_glyphs/render/renderer.hpp"
 
@@ -58,9 +59,15 @@ void requireInsideFrame(const DiffusionCurveImage& before, const DiffusionCurveI
 }
 
 // A curve a modification left as it was must not pass unnoticed: the picture would look like a
-// modified glyph that encodes nothing (or the lowest level).
+// modified glyph that encodes nothing (or the lowest level). No curve at all: an error, no file.
 template <class Reports>
 void warnSkipped(const Reports& reports, const char* what, std::ostream& err) {
+  const std::string nothing = pacemod::nothingModifiedReason(reports);
+  if (!nothing.empty()) {
+    throw std::runtime_error(std::string("the ") + what +
+                             " cannot be drawn on any selected curve (" + nothing +
+                             "): the glyph would look unmodified");
+  }
   for (const auto& report : reports) {
     if (report.skipped.empty()) continue;
     err << "vicc_glyph modify: warning: curve " << report.curve << ": " << what

@@ -130,19 +130,32 @@ TEST_F(ModifyCliTest, BadParametersExitWithAMessageNamingThem) {
   EXPECT_NE(missing.err.find("nope.svg"), std::string::npos);
 }
 
-// A modification a curve cannot take leaves it as it was; the user is told so.
-TEST_F(ModifyCliTest, SkippedModificationsAreWarnedAbout) {
-  const ToolRun r = run(kIcons + "heart.svg --out " + path("x.png") +
-                        " --size 64 --frequency 1e-9 --amplitude 0.5");
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("warning: curve 0: waves not applied: fewer than half a wave"),
+// A modification a curve cannot take leaves it as it was; the user is told so. Where no curve
+// takes it, the glyph would look unmodified (the lowest level): an error, and no file.
+TEST_F(ModifyCliTest, SkippedModificationsAreWarnedAboutAndNoneTakenIsAnError) {
+  const ToolRun some = run(kIcons + "bell.svg --out " + path("b.png") +
+                           " --size 256 --frequency 0.2 --amplitude 0.5");
+  EXPECT_EQ(some.exit_code, 0) << some.err;
+  EXPECT_NE(some.err.find("warning: curve 0: waves not applied: fewer than half a wave"),
             std::string::npos)
-      << r.err;
+      << some.err;
+  EXPECT_TRUE(std::filesystem::exists(path("b.png")));
+  const ToolRun none = run(kIcons + "heart.svg --out " + path("x.png") +
+                           " --size 64 --frequency 1e-9 --amplitude 0.5");
+  EXPECT_EQ(none.exit_code, 1) << none.err;
+  EXPECT_NE(none.err.find("the waves cannot be drawn on any selected curve (curve 0: fewer than "
+                          "half a wave"),
+            std::string::npos)
+      << none.err;
+  EXPECT_FALSE(std::filesystem::exists(path("x.png")));
   const ToolRun shrunk =
       run(kIcons + "lightning-bolt.svg --out " + path("y.png") + " --size 64 --inflate -8");
-  EXPECT_EQ(shrunk.exit_code, 0) << shrunk.err;
-  EXPECT_NE(shrunk.err.find("inflation not applied: nothing is left"), std::string::npos)
+  EXPECT_EQ(shrunk.exit_code, 1) << shrunk.err;
+  EXPECT_NE(shrunk.err.find("the inflation cannot be drawn on any selected curve (curve 0: "
+                            "nothing is left"),
+            std::string::npos)
       << shrunk.err;
+  EXPECT_FALSE(std::filesystem::exists(path("y.png")));
 }
 
 TEST_F(ModifyCliTest, HelpSucceeds) { EXPECT_EQ(run("--help").exit_code, 0); }

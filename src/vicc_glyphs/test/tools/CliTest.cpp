@@ -172,12 +172,18 @@ TEST_F(CliTest, NothingToDrawIsAnErrorNotABackgroundPicture) {
   EXPECT_EQ(render.exit_code, 1);
   EXPECT_NE(render.err.find("nothing to draw"), std::string::npos) << render.err;
   EXPECT_FALSE(fs::exists(png));
-  // Inside the frame, but both sides barriers: nothing emits a colour.
+  // Inside the frame, closed (so that waves apply), but both sides barriers: nothing emits a
+  // colour.
   const fs::path barriers = dir_ / "barriers.xml";
   std::ofstream(barriers)
       << "<curve_set image_width=\"32\" image_height=\"32\"><curve><control_points_set>"
-         "<control_point x=\"2\" y=\"2\"/><control_point x=\"10\" y=\"10\"/>"
-         "<control_point x=\"20\" y=\"20\"/><control_point x=\"30\" y=\"30\"/>"
+         "<control_point x=\"4\" y=\"4\"/><control_point x=\"12\" y=\"4\"/>"
+         "<control_point x=\"20\" y=\"4\"/><control_point x=\"28\" y=\"4\"/>"
+         "<control_point x=\"28\" y=\"12\"/><control_point x=\"28\" y=\"20\"/>"
+         "<control_point x=\"28\" y=\"28\"/><control_point x=\"20\" y=\"28\"/>"
+         "<control_point x=\"12\" y=\"28\"/><control_point x=\"4\" y=\"28\"/>"
+         "<control_point x=\"4\" y=\"20\"/><control_point x=\"4\" y=\"12\"/>"
+         "<control_point x=\"4\" y=\"4\"/>"
          "</control_points_set><left_colors_set boundary=\"Neumann\"></left_colors_set>"
          "<right_colors_set boundary=\"Neumann\"></right_colors_set></curve></curve_set>";
   const ToolRun modify = run("modify " + barriers.string() + " --out " + png.string() +
