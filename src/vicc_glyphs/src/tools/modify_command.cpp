@@ -61,7 +61,7 @@ void requireInsideFrame(const DiffusionCurveImage& before, const DiffusionCurveI
 // A curve a modification left as it was must not pass unnoticed: the picture would look like a
 // modified glyph that encodes nothing (or the lowest level). No curve at all: an error, no file.
 template <class Reports>
-void warnSkipped(const Reports& reports, const char* what, std::ostream& err) {
+void requireTakenAndWarnSkipped(const Reports& reports, const char* what, std::ostream& err) {
   const std::string nothing = pacemod::nothingModifiedReason(reports);
   if (!nothing.empty()) {
     throw std::runtime_error(std::string("the ") + what +
@@ -101,9 +101,9 @@ int runModifyCommand(const std::vector<std::string>& args, std::ostream& out, st
     const DiffusionCurveImage original = image;
     ModifyOutcome outcome = modify(request, image);
     requireInsideFrame(original, image, outcome.selected);
-    warnSkipped(outcome.inflated, "inflation", err);
-    warnSkipped(outcome.waves, "waves", err);
-    warnSkipped(outcome.dashes, "dashes", err);
+    requireTakenAndWarnSkipped(outcome.inflated, "inflation", err);
+    requireTakenAndWarnSkipped(outcome.waves, "waves", err);
+    requireTakenAndWarnSkipped(outcome.dashes, "dashes", err);
     const std::string problem = validate(image);
     if (!problem.empty()) throw std::runtime_error("modified image is invalid: " + problem);
     RenderResult result;

@@ -140,22 +140,21 @@ TEST_F(ModifyCliTest, SkippedModificationsAreWarnedAboutAndNoneTakenIsAnError) {
             std::string::npos)
       << some.err;
   EXPECT_TRUE(std::filesystem::exists(path("b.png")));
-  const ToolRun none = run(kIcons + "heart.svg --out " + path("x.png") +
-                           " --size 64 --frequency 1e-9 --amplitude 0.5");
-  EXPECT_EQ(none.exit_code, 1) << none.err;
-  EXPECT_NE(none.err.find("the waves cannot be drawn on any selected curve (curve 0: fewer than "
-                          "half a wave"),
-            std::string::npos)
-      << none.err;
-  EXPECT_FALSE(std::filesystem::exists(path("x.png")));
-  const ToolRun shrunk =
-      run(kIcons + "lightning-bolt.svg --out " + path("y.png") + " --size 64 --inflate -8");
-  EXPECT_EQ(shrunk.exit_code, 1) << shrunk.err;
-  EXPECT_NE(shrunk.err.find("the inflation cannot be drawn on any selected curve (curve 0: "
-                            "nothing is left"),
-            std::string::npos)
-      << shrunk.err;
-  EXPECT_FALSE(std::filesystem::exists(path("y.png")));
+  struct NoneTaken {
+    std::string args, output, message;
+  };
+  const NoneTaken cases[] = {
+      {"heart.svg --size 64 --frequency 1e-9 --amplitude 0.5", "x.png",
+       "the waves cannot be drawn on any selected curve (curve 0: fewer than half a wave"},
+      {"lightning-bolt.svg --size 64 --inflate -8", "y.png",
+       "the inflation cannot be drawn on any selected curve (curve 0: nothing is left"},
+  };
+  for (const NoneTaken& c : cases) {
+    const ToolRun r = run(kIcons + c.args + " --out " + path(c.output));
+    EXPECT_EQ(r.exit_code, 1) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(path(c.output))) << c.args;
+  }
 }
 
 TEST_F(ModifyCliTest, HelpSucceeds) { EXPECT_EQ(run("--help").exit_code, 0); }
