@@ -373,6 +373,42 @@ TEST(DesignBuild, ShrunkDropsLeaveNoHaze) {
   EXPECT_GT(darkestIn("rain_forecast_sine", 1, 0.38, 0.42, 0.72, 0.76), 0.97f) << "between drops";
 }
 
+// The cloud's underside above the outer drops stays cloud grey at every amount. The drops' tips
+// used to reach into the cloud: the cloud kept a notch there, white under shrunk drops, a spike
+// of the drops' colour above inflated ones.
+TEST(DesignBuild, TheCloudsUndersideKeepsItsColourAboveTheDrops) {
+  const cv::Vec3f cloud(0x6b / 255.0f, 0x7b / 255.0f, 0x8c / 255.0f);  // rain_cloud.svg's fill
+  for (const std::string name : {"rain_forecast_sine", "rain_forecast_dashes"}) {
+    const GlyphDesign design = shipped(name);
+    const DiffusionCurveImage icon = loadIcon(design, 256);
+    ASSERT_EQ(icon.curves.size(), 4u) << name;
+    double bottom = 0.0;  // of the cloud (curve 0), px
+    for (const Point2& p : icon.curves[0].control_points) bottom = std::max(bottom, p.y());
+    std::vector<double> tips_x;  // the outer drops' (curves 1 and 3) uppermost points
+    for (const int drop : {1, 3}) {
+      const auto& points = icon.curves[drop].control_points;
+      tips_x.push_back(std::min_element(points.begin(), points.end(), [](auto& a, auto& b) {
+                         return a.y() < b.y();
+                       })->x());
+    }
+    for (const double amount : {1.0, 5.0, 20.0}) {
+      const RenderResult result = renderDiffusionCurves(buildGlyph(
+          design, design.levelsFor({{"probability", 95}, {"amount", amount}}), model(), icon));
+      float worst = 0.0f;
+      for (const double x : tips_x) {
+        for (int row = static_cast<int>(bottom) - 4; row <= static_cast<int>(bottom) - 2; ++row) {
+          for (int col = static_cast<int>(x) - 8; col <= static_cast<int>(x) + 8; ++col) {
+            const cv::Vec3f difference = result.image.at<cv::Vec3f>(row, col) - cloud;
+            worst = std::max(
+                {worst, std::abs(difference[0]), std::abs(difference[1]), std::abs(difference[2])});
+          }
+        }
+      }
+      EXPECT_LT(worst, 0.02f) << name << ", amount " << amount;
+    }
+  }
+}
+
 // Hiding drops must not take the colour of the drop that stays (same colour, other curve).
 TEST(DesignBuild, HiddenDropsLeaveTheRemainingDropFilled) {
   const GlyphDesign design = shipped("rain_forecast_dashes");
