@@ -25,6 +25,7 @@ add_library(vicc_glyphs_pacemod
   src/pacemod/contour_waves.cpp
   src/pacemod/periodic_waves.cpp
   src/pacemod/offset_contour.cpp
+  src/pacemod/closed_bezier_fit.cpp
   src/pacemod/dashes.cpp
   src/pacemod/inflate.cpp
 )

@@ -74,16 +74,17 @@ void runGlyph(const fs::path& icon, const WaveSpec& spec, DiffusionCurveRenderer
   }
   const measure::GlyphCheck check =
       measure::checkGlyph(original, image, reports, spec, kSize / kSizeMm);
-  if (verbose &&
-      (check.new_crossings > 0 || check.new_sharp_turns > 0 || !check.failures.empty())) {
+  if (verbose && (check.new_crossings > 0 || check.new_subpixel_loops > 0 ||
+                  check.new_sharp_turns > 0 || !check.failures.empty())) {
     std::fprintf(stderr,
-                 "%s %s f=%g a=%g: crossings %d, sharp turns %d, full lobes %d/%d, reduced lobes "
-                 "%d/%d, count %d/%d + %d/%d reduced\n",
+                 "%s %s f=%g a=%g: crossings %d, sub-pixel loops %d, sharp turns %d, full lobes "
+                 "%d/%d, reduced lobes %d/%d, count %d/%d + %d/%d reduced\n",
                  icon.filename().c_str(), waveformName(spec.waveform).c_str(),
                  spec.waves_per_mm * 10, spec.amplitude_mm, check.new_crossings,
-                 check.new_sharp_turns, check.full_lobes_ok, check.full_lobes,
-                 check.reduced_lobes_ok, check.reduced_lobes, check.unreduced_count_ok,
-                 check.unreduced_contours, check.reduced_count_ok, check.reduced_decidable);
+                 check.new_subpixel_loops, check.new_sharp_turns, check.full_lobes_ok,
+                 check.full_lobes, check.reduced_lobes_ok, check.reduced_lobes,
+                 check.unreduced_count_ok, check.unreduced_contours, check.reduced_count_ok,
+                 check.reduced_decidable);
     for (const Point2& turn : check.sharp_turn_points) {
       std::fprintf(stderr, "    sharp turn at (%.1f, %.1f)\n", turn.x(), turn.y());
     }
@@ -122,9 +123,9 @@ const char* kColumns =
     "| glyphs | contours | count ok, unreduced | count ok, reduced (decidable) | undecidable "
     "| full lobes within 10 % | median err % | worst err % | reduced lobes within 10 % of applied "
     "| worst err % | reduced knot points (by the polygon check) | new crossings "
-    "| new sharp turns | modify ms | render ms | total ms median "
+    "| new sub-pixel loops | new sharp turns | modify ms | render ms | total ms median "
     "| total ms p95 | total ms max |\n"
-    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
 
 void printHeader(const char* first) {
   std::printf("| %s ", first);
@@ -135,13 +136,14 @@ void printRow(const std::string& label, const Totals& t) {
   const measure::GlyphCheck& c = t.check;
   std::printf(
       "| %s | %d | %d | %d/%d | %d/%d | %d | %d/%d | %.1f | %.1f | %d/%d | %.1f | %d (%d) | %d | "
-      "%d | %.1f | %.1f | %.1f | %.1f | %.1f |\n",
+      "%d | %d | %.1f | %.1f | %.1f | %.1f | %.1f |\n",
       label.c_str(), t.glyphs, c.contours, c.unreduced_count_ok, c.unreduced_contours,
       c.reduced_count_ok, c.reduced_decidable, c.reduced_undecidable, c.full_lobes_ok, c.full_lobes,
       100.0 * c.median_full_error(), 100.0 * c.worst_full_error, c.reduced_lobes_ok,
       c.reduced_lobes, 100.0 * c.worst_reduced_error, c.reduced_peaks, c.crossing_peaks,
-      c.new_crossings, c.new_sharp_turns, bench::median(t.modify_ms), bench::median(t.render_ms),
-      bench::median(t.total_ms), bench::percentile95(t.total_ms), bench::maximum(t.total_ms));
+      c.new_crossings, c.new_subpixel_loops, c.new_sharp_turns, bench::median(t.modify_ms),
+      bench::median(t.render_ms), bench::median(t.total_ms), bench::percentile95(t.total_ms),
+      bench::maximum(t.total_ms));
 }
 
 namespace cli = vicc_common::cli;

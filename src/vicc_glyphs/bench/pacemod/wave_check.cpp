@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
+#include "vicc_glyphs/dci/flattening.hpp"
 #include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 #include "vicc_glyphs/pacemod/polyline.hpp"
 #include "vicc_glyphs/pacemod/wave_layout.hpp"
@@ -98,10 +100,38 @@ bool inLobe(const Lobe& lobe, double arc, double tolerance) {
   return false;
 }
 
-int crossings(const DiffusionCurveImage& image) {
-  std::vector<Polyline> lines;
-  for (const DiffusionCurve& curve : image.curves) lines.push_back(sampleCurve(curve, 16));
-  return static_cast<int>(findCrossings(lines).size());
+// Length of the loop that a crossing of one closed polyline with itself cuts off (the shorter
+// way round between the two crossing segments); infinite for two different polylines.
+double loopLength(const std::vector<Polyline>& lines, const Crossing& crossing) {
+  if (crossing.a.line != crossing.b.line) return std::numeric_limits<double>::infinity();
+  const Polyline& line = lines[crossing.a.line];
+  double inner = 0.0, total = 0.0;
+  for (int i = 0; i + 1 < static_cast<int>(line.size()); ++i) {
+    const double step = (line[i + 1] - line[i]).norm();
+    total += step;
+    if (i > crossing.a.segment && i < crossing.b.segment) inner += step;
+  }
+  return std::min(inner, total - inner);
+}
+
+struct CrossingCount {
+  int drawn = 0;           ///< of the polylines the renderer draws
+  int dense = 0;           ///< at 16 points per segment, around loops of kSubpixelLoopPx or more
+  int subpixel_loops = 0;  ///< at 16 points per segment, around shorter loops
+};
+
+CrossingCount crossings(const DiffusionCurveImage& image) {
+  CrossingCount count;
+  std::vector<Polyline> drawn, dense;
+  for (const DiffusionCurve& curve : image.curves) {
+    drawn.push_back(flattenCurve(curve));
+    dense.push_back(sampleCurve(curve, 16));
+  }
+  count.drawn = static_cast<int>(findCrossings(drawn).size());
+  for (const Crossing& crossing : findCrossings(dense)) {
+    ++(loopLength(dense, crossing) < kSubpixelLoopPx ? count.subpixel_loops : count.dense);
+  }
+  return count;
 }
 
 // Every place where a step of a curve's polyline turns by more than kSharpTurnDegrees against
@@ -233,7 +263,10 @@ GlyphCheck checkGlyph(const DiffusionCurveImage& original, const DiffusionCurveI
     checkContour(sampleCurve(original.curves[report.curve], 32),
                  sampleCurve(modified.curves[report.curve], 16), report, spec, px_per_mm, check);
   }
-  check.new_crossings = std::max(0, crossings(modified) - crossings(original));
+  const CrossingCount before_crossings = crossings(original), after = crossings(modified);
+  check.new_crossings =
+      std::max({0, after.drawn - before_crossings.drawn, after.dense - before_crossings.dense});
+  check.new_subpixel_loops = std::max(0, after.subpixel_loops - before_crossings.subpixel_loops);
   const std::vector<Point2> before = sharpTurns(original);
   for (const Point2& turn : sharpTurns(modified)) {
     const bool known = std::any_of(before.begin(), before.end(), [&](const Point2& old) {
@@ -259,6 +292,7 @@ void add(GlyphCheck& total, const GlyphCheck& part) {
   total.reduced_peaks += part.reduced_peaks;
   total.crossing_peaks += part.crossing_peaks;
   total.new_crossings += part.new_crossings;
+  total.new_subpixel_loops += part.new_subpixel_loops;
   total.new_sharp_turns += part.new_sharp_turns;
   total.worst_full_error = std::max(total.worst_full_error, part.worst_full_error);
   total.worst_reduced_error = std::max(total.worst_reduced_error, part.worst_reduced_error);

@@ -37,6 +37,12 @@ constexpr double kVisiblePx = 2.0 * kMinLobeThresholdPx;
 constexpr double kSharpTurnDegrees = 170.0;
 /// A sharp turn of the result within this distance of one of the original is not new (px).
 constexpr double kSameTurnPx = 1.0;
+/// The crossings are those of the polylines the renderer draws (dci/flattening.hpp, which the
+/// polygon repair searches) and those of 16 points per Bezier segment, which are finer on
+/// short, nearly straight segments; of the latter a loop shorter than this along the curve
+/// (px), far below what the renderer's pieces (0.02 px from the curve) can show, is counted
+/// apart as a sub-pixel loop.
+constexpr double kSubpixelLoopPx = 0.05;
 
 struct GlyphCheck {
   int contours = 0;             ///< modified contours (wave count >= 1)
@@ -49,9 +55,10 @@ struct GlyphCheck {
   int full_lobes_ok = 0;        ///< |extreme - expected| <= 10 % of expected
   int reduced_lobes = 0;        ///< lobes around reduced knot points (rated against those)
   int reduced_lobes_ok = 0;
-  int reduced_peaks = 0;    ///< knot points self-intersection prevention shortened
-  int crossing_peaks = 0;   ///< of those: by the polygon check (reason "crossing")
-  int new_crossings = 0;    ///< polygon crossings in the result that the original did not have
+  int reduced_peaks = 0;       ///< knot points self-intersection prevention shortened
+  int crossing_peaks = 0;      ///< of those: by the polygon check (reason "crossing")
+  int new_crossings = 0;       ///< polygon crossings in the result that the original did not have
+  int new_subpixel_loops = 0;  ///< loops under kSubpixelLoopPx the original did not have
   int new_sharp_turns = 0;  ///< sharp turns of the result not within kSameTurnPx of the original's
   std::vector<Point2> sharp_turn_points;  ///< where (the new ones)
   double worst_full_error = 0.0;

@@ -268,6 +268,42 @@ std::vector<Point2> BSplineCurve::sampleSpans(int per_span, std::vector<double>&
   return points;
 }
 
+std::vector<Point2> BSplineCurve::flattenSpans(std::vector<double>& parameters,
+                                               const Flattening& flattening) const {
+  if (degree_ != 3) fail("flattening needs a cubic curve");
+  const std::vector<double> breaks = breakpoints();
+  const std::size_t pieces = breaks.size() - 1;
+  // Each polynomial piece's Bezier points, from its ends and end derivatives (of this piece's
+  // polynomial: at a corner the next piece's derivative differs).
+  std::vector<std::array<Point2, 4>> beziers(pieces);
+  int span = degree_;
+  for (std::size_t i = 0; i < pieces; ++i) {
+    const double u0 = breaks[i], u1 = breaks[i + 1], h = u1 - u0;
+    span = nextSpan(u0, span);
+    const Point2 p0 = evaluateOn(u0, span, 0), p1 = evaluateOn(u1, span, 0);
+    beziers[i] = {p0, p0 + h / 3.0 * evaluateOn(u0, span, 1),
+                  p1 - h / 3.0 * evaluateOn(u1, span, 1), p1};
+  }
+  const bool closed = isClosed();
+  std::vector<Point2> points;
+  parameters.clear();
+  for (std::size_t i = 0; i < pieces; ++i) {
+    const Point2* b = beziers[i].data();
+    const bool after_fold =
+        (i > 0 || closed) && meetAtFold(beziers[i > 0 ? i - 1 : pieces - 1].data(), b);
+    const bool before_fold =
+        (i + 1 < pieces || closed) && meetAtFold(b, beziers[i + 1 < pieces ? i + 1 : 0].data());
+    const int steps = flatteningPieces(b, after_fold || before_fold, flattening);
+    for (int k = 0; k < steps; ++k) {
+      points.push_back(bezierPoint(b, static_cast<double>(k) / steps));
+      parameters.push_back(breaks[i] + (breaks[i + 1] - breaks[i]) * k / steps);
+    }
+  }
+  parameters.push_back(breaks.back());
+  points.push_back(pointAt(breaks.back()));
+  return points;
+}
+
 std::vector<Point2> BSplineCurve::pointsAt(const std::vector<double>& parameters) const {
   std::vector<Point2> points;
   points.reserve(parameters.size());

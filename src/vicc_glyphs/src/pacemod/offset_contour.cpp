@@ -7,9 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "vicc_glyphs/bspline/bezier_conversion.hpp"
-#include "vicc_glyphs/bspline/fitting.hpp"
-#include "vicc_glyphs/bspline/fowler_bartels.hpp"
+#include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 
 namespace vicc_glyphs {
 namespace pacemod {
@@ -303,7 +301,7 @@ class IsolineProjection {
 };
 
 // The raster's isoline points on the exact isoline, with the corners the raster's steps cut and
-// the points its bends need, resampled to at most kSpacingPx apart.
+// the points its bends need, resampled to at most kSpacingPx apart, without small loops.
 Polyline projectOntoIsoline(const Polyline& points, const Polyline& contour, double offset) {
   const IsolineProjection projection(contour, offset);
   Polyline projected, feet(points.size());
@@ -315,10 +313,76 @@ Polyline projectOntoIsoline(const Polyline& points, const Polyline& contour, dou
     const std::size_t j = (i + 1) % projected.size();
     projection.appendPiece(projected[i], feet[i], projected[j], feet[j], isoline);
   }
-  return resampled(isoline);
+  return withoutHairs(withoutSmallLoops(resampled(isoline)));
 }
 
 }  // namespace
+
+// `line` (closed) with every loop of at most kLoopPx cut out at its crossing: projecting onto
+// the exact isoline folds its cusps (where the offsets of two lobes meet) into loops of a few
+// hundredths of a pixel, and a fitted curve that follows them crosses itself. The isoline of a
+// region bounds it: it has no loop of its own.
+Polyline withoutSmallLoops(Polyline line) {
+  constexpr double kLoopPx = 1.0;
+  for (bool cut = true; cut;) {
+    cut = false;
+    for (const Crossing& crossing : findCrossings({line})) {
+      const int first = crossing.a.segment, last = crossing.b.segment;  // first < last
+      double loop = 0.0;
+      for (int i = first + 1; i < last && loop <= kLoopPx; ++i)
+        loop += (line[i + 1] - line[i]).norm();
+      if (loop > kLoopPx) continue;  // a loop across the closing point, or a large one: kept
+      const Point2 at = crossingPoint({line}, crossing);
+      line.erase(line.begin() + first + 1, line.begin() + last + 1);
+      line.insert(line.begin() + first + 1, at);
+      cut = true;
+      break;  // the indices of the other crossings have moved
+    }
+  }
+  return line;
+}
+
+// `line` (closed) without its hairs: stretches that run out and back along themselves, their
+// two sides closer than kHairWidthPx and enclosing (with the gap) less than that width times
+// their length. Where two parts of the offset region nearly touch, the raster's trace runs into
+// the crack between them and out again; a fitted curve cannot follow both sides of a zero-width
+// crack without crossing itself, and the crack holds no area of the region.
+Polyline withoutHairs(const Polyline& line) {
+  constexpr double kHairWidthPx = 0.25;
+  constexpr double kLongestHairPx = 80.0;  // both sides
+  if (line.size() < 5) return line;
+  const std::vector<Point2> ring(line.begin(), line.end() - 1);
+  const std::size_t n = ring.size();
+  std::vector<double> at(n + 1, 0.0);  // arc length at each point, and the whole length
+  for (std::size_t i = 0; i < n; ++i) at[i + 1] = at[i] + (ring[(i + 1) % n] - ring[i]).norm();
+  std::vector<char> removed(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (removed[i]) continue;
+    // The farthest point along the line (within the longest hair) that comes back to ring[i].
+    std::size_t tip_end = i;
+    double area = 0.0;  // of the polygon ring[i] ... ring[j], closed by the gap
+    for (std::size_t step = 1, j = (i + 1) % n; step < n && j != i; ++step, j = (j + 1) % n) {
+      const std::size_t previous = (j + n - 1) % n;
+      area += cross(ring[previous] - ring[i], ring[j] - ring[i]);
+      const double along = at[j] - at[i] + (j < i ? at[n] : 0.0);
+      // Past this point the line cannot come back to ring[i] within the longest hair.
+      if (along + (ring[j] - ring[i]).norm() > kLongestHairPx) break;
+      if (along > 2.0 * kHairWidthPx && (ring[j] - ring[i]).norm() < kHairWidthPx &&
+          0.5 * std::abs(area) < kHairWidthPx * along) {
+        tip_end = j;
+      }
+    }
+    if (tip_end == i) continue;
+    for (std::size_t j = (i + 1) % n; j != tip_end; j = (j + 1) % n) removed[j] = 1;
+  }
+  Polyline kept;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!removed[i]) kept.push_back(ring[i]);
+  }
+  if (kept.size() < 4) return line;
+  kept.push_back(kept.front());
+  return kept;
+}
 
 Polyline offsetIsoline(const Polyline& contour, double offset) {
   if (contour.size() < 4 || !std::isfinite(offset) || !allFinite(contour)) return {};
@@ -359,31 +423,6 @@ Polyline offsetIsolineAvoiding(const Polyline& contour, double offset,
     if (limited) *limited = totalArea(region) < before - 1.0;  // one unit^2: anything at all
   }
   return orientedLike(largestAsPolyline(region), contour);
-}
-
-std::vector<Point2> closedBezierFit(const Polyline& line, double knot_spacing) {
-  if (line.size() < 5) throw std::invalid_argument("closedBezierFit: need at least 4 points");
-  double length = 0.0;
-  for (std::size_t i = 0; i + 1 < line.size(); ++i) length += (line[i + 1] - line[i]).norm();
-  const int spans = std::clamp(static_cast<int>(std::lround(length / knot_spacing)), 4,
-                               static_cast<int>(line.size()) / 2);
-  const std::vector<double> parameters = bspline::chordLengthParameters(line, 0.0, 1.0);
-  const std::vector<double> knots =
-      bspline::BSplineCurve::clampedUniformKnots(3, spans + 3, 0.0, 1.0);
-  // Banded normal equations: tens of points per span determine the curve well, and a sparse QR
-  // of a traced isoline (thousands of points) cost as much as the distance transform.
-  const bspline::CubicLeastSquares solver(
-      bspline::BSplineCurve(3, knots, std::vector<Point2>(knots.size() - 4, Point2::Zero())),
-      parameters);
-  Eigen::MatrixX2d targets(static_cast<Eigen::Index>(line.size()), 2);
-  for (std::size_t i = 0; i < line.size(); ++i) targets.row(static_cast<Eigen::Index>(i)) = line[i];
-  bspline::BSplineCurve fit(3, knots, solver.solvePoints(targets));
-  // Close it exactly with equal end tangents (the fit leaves both ends free).
-  const Point2 start = 0.5 * (fit.pointAt(0.0) + fit.pointAt(1.0));
-  const Point2 tangent = 0.5 * (fit.derivativeAt(0.0) + fit.derivativeAt(1.0));
-  fit = bspline::fowlerBartelsModify(
-      fit, {{0.0, start, 0}, {1.0, start, 0}, {0.0, tangent, 1}, {1.0, tangent, 1}});
-  return bspline::bsplineToBezierChain(fit).control_points;
 }
 
 }  // namespace pacemod

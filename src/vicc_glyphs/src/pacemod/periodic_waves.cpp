@@ -9,6 +9,7 @@
 
 #include "vicc_glyphs/bspline/arc_length.hpp"
 #include "vicc_glyphs/bspline/spline_diffusion_curve.hpp"
+#include "vicc_glyphs/dci/flattening.hpp"
 #include "vicc_glyphs/pacemod/contour_teeth.hpp"
 #include "vicc_glyphs/pacemod/contour_waves.hpp"
 #include "vicc_glyphs/pacemod/polygon_crossings.hpp"
@@ -20,7 +21,6 @@ namespace {
 
 constexpr double kMinQuarterPeriodPx = 0.5;
 constexpr double kNoCap = 1e300;
-constexpr int kSamplesPerSpan = 16;  // as dense as the bench's polygon check
 // Bucket size of the crossing search, px: high-frequency waves put hundreds of their dense
 // samples into an 8 px cell, and each bucket's pairs are tested.
 constexpr double kCrossingCellPx = 2.0;
@@ -100,10 +100,53 @@ std::unique_ptr<WavedContour> prepare(const DiffusionCurve& curve, int index,
   return contour;
 }
 
-// Polyline of the wave's spline with the spline parameter (= original arc length) per point.
-Polyline sampleWave(const ContourWave& wave, std::vector<double>& parameters) {
-  return wave.curve.sampleSpans(kSamplesPerSpan, parameters);
-}
+// The contours as polylines for the polygon check, with the spline parameter (= original arc
+// length) of each point of a waved one. Two samplings: the pieces the renderer draws
+// (dci/flattening.hpp), where a crossing would show as a smudge of one side's colour in the
+// other, and 16 points per span, finer on short, nearly straight spans, where two parts of a
+// contour can overlap by a sliver or loop over a few hundredths of a pixel. Only the contours a
+// repair round rebuilt are sampled again.
+class ContourPolygons {
+ public:
+  enum class Sampling { kAsDrawn, kDense };
+
+  ContourPolygons(const DiffusionCurveImage& image,
+                  const std::map<int, std::unique_ptr<WavedContour>>& waved, Sampling sampling)
+      : image_(image),
+        waved_(waved),
+        sampling_(sampling),
+        lines_(image.curves.size()),
+        parameters_(image.curves.size()),
+        stale_(image.curves.size(), 1) {}
+
+  const std::vector<Polyline>& lines() {
+    for (std::size_t i = 0; i < lines_.size(); ++i) {
+      if (!stale_[i]) continue;
+      stale_[i] = 0;
+      const auto found = waved_.find(static_cast<int>(i));
+      const bool drawn = sampling_ == Sampling::kAsDrawn;
+      if (found == waved_.end()) {
+        lines_[i] = drawn ? flattenCurve(image_.curves[i]) : sampleCurve(image_.curves[i], 16);
+      } else {
+        const bspline::BSplineCurve& curve = found->second->wave->curve;
+        lines_[i] =
+            drawn ? curve.flattenSpans(parameters_[i]) : curve.sampleSpans(16, parameters_[i]);
+      }
+    }
+    return lines_;
+  }
+  /// The spline parameter at the start of `segment` of waved contour `line`.
+  double parameterAt(int line, int segment) const { return parameters_[line][segment]; }
+  void rebuilt(int line) { stale_[line] = 1; }
+
+ private:
+  const DiffusionCurveImage& image_;
+  const std::map<int, std::unique_ptr<WavedContour>>& waved_;
+  Sampling sampling_;
+  std::vector<Polyline> lines_;
+  std::vector<std::vector<double>> parameters_;
+  std::vector<char> stale_;
+};
 
 // Halves the caps of the knot points within half a period of arc length `u` (cyclically), or
 // sets them to 0 in the last round. A crossing can persist with every knot point of that window
@@ -140,10 +183,14 @@ void capAround(WavedContour& contour, double u, bool last_round) {
 class InheritedCrossings {
  public:
   InheritedCrossings(const DiffusionCurveImage& image, CrossingFinder& finder) {
-    std::vector<Polyline> lines;
-    for (const DiffusionCurve& curve : image.curves) lines.push_back(sampleCurve(curve, 16));
-    for (const Crossing& crossing : finder.find(lines, kCrossingCellPx)) {
-      points_[{crossing.a.line, crossing.b.line}].push_back(crossingPoint(lines, crossing));
+    for (const bool drawn : {true, false}) {  // as the two samplings of ContourPolygons
+      std::vector<Polyline> lines;
+      for (const DiffusionCurve& curve : image.curves) {
+        lines.push_back(drawn ? flattenCurve(curve) : sampleCurve(curve, 16));
+      }
+      for (const Crossing& crossing : finder.find(lines, kCrossingCellPx)) {
+        points_[{crossing.a.line, crossing.b.line}].push_back(crossingPoint(lines, crossing));
+      }
     }
   }
 
@@ -164,47 +211,63 @@ class InheritedCrossings {
   std::map<std::pair<int, int>, std::vector<Point2>> points_;
 };
 
+// One round of the polygon check on `polygons`: caps the waves around every crossing that the
+// original contours do not have. Returns the number of such crossings and, per image curve, the
+// crossings on it (`left`) and whether its wave was capped (`changed`).
+struct RoundOutcome {
+  int crossings = 0;
+  std::map<int, int> left;
+  std::map<int, bool> changed;
+};
+
+RoundOutcome capAtCrossings(ContourPolygons& polygons, const DiffusionCurveImage& image,
+                            std::map<int, std::unique_ptr<WavedContour>>& waved, int round,
+                            CrossingFinder& finder, std::optional<InheritedCrossings>& inherited) {
+  RoundOutcome outcome;
+  const std::vector<Polyline>& lines = polygons.lines();
+  const int last_round = kMaxRepairRounds + kMaxFlatteningRounds;
+  for (const Crossing& crossing : finder.find(lines, kCrossingCellPx)) {
+    if (!inherited) inherited.emplace(image, finder);  // at the first crossing: most have none
+    if (inherited->contains(lines, crossing)) continue;
+    ++outcome.crossings;
+    for (const SegmentRef& side : {crossing.a, crossing.b}) {
+      ++outcome.left[side.line];
+      const auto found = waved.find(side.line);
+      if (found == waved.end() || round == last_round) continue;
+      capAround(*found->second, polygons.parameterAt(side.line, side.segment),
+                round + 1 >= kMaxRepairRounds);
+      outcome.changed[side.line] = true;
+    }
+  }
+  return outcome;
+}
+
 // The polygon check after the skeleton guard; returns the crossings left per image curve
-// (those the original contours have themselves neither repaired nor counted).
+// (those the original contours have themselves neither repaired nor counted). A round searches
+// the contours as drawn and, where they do not cross, 16 points per span: that search, as
+// costly as the first, runs about once per glyph.
 std::map<int, int> repairCrossings(const DiffusionCurveImage& image,
                                    std::map<int, std::unique_ptr<WavedContour>>& waved,
                                    const Context& context) {
-  std::map<int, int> left;
-  std::optional<InheritedCrossings> inherited;  // built at the first crossing (most have none)
+  std::optional<InheritedCrossings> inherited;
   CrossingFinder finder;
-  // Sampled once; a round samples again only the contours it rebuilt.
-  std::vector<Polyline> lines;
-  std::vector<std::vector<double>> parameters(image.curves.size());
-  for (int i = 0; i < static_cast<int>(image.curves.size()); ++i) {
-    const auto found = waved.find(i);
-    lines.push_back(found != waved.end() ? sampleWave(*found->second->wave, parameters[i])
-                                         : sampleCurve(image.curves[i], 16));
-  }
-  const int last_round = kMaxRepairRounds + kMaxFlatteningRounds;
-  for (int round = 0; round <= last_round; ++round) {
-    const std::vector<Crossing> crossings = finder.find(lines, kCrossingCellPx);
-    std::map<int, bool> changed;
-    left.clear();
-    for (const Crossing& crossing : crossings) {
-      if (!inherited) inherited.emplace(image, finder);
-      if (inherited->contains(lines, crossing)) continue;
-      for (const SegmentRef& side : {crossing.a, crossing.b}) {
-        ++left[side.line];
-        const auto found = waved.find(side.line);
-        if (found == waved.end() || round == last_round) continue;
-        capAround(*found->second, parameters[side.line][side.segment],
-                  round + 1 >= kMaxRepairRounds);
-        changed[side.line] = true;
-      }
+  ContourPolygons drawn(image, waved, ContourPolygons::Sampling::kAsDrawn);
+  std::optional<ContourPolygons> dense;
+  RoundOutcome outcome;
+  for (int round = 0; round <= kMaxRepairRounds + kMaxFlatteningRounds; ++round) {
+    outcome = capAtCrossings(drawn, image, waved, round, finder, inherited);
+    if (outcome.crossings == 0) {
+      if (!dense) dense.emplace(image, waved, ContourPolygons::Sampling::kDense);
+      outcome = capAtCrossings(*dense, image, waved, round, finder, inherited);
     }
-    if (changed.empty()) break;
-    for (const auto& entry : changed) {
-      WavedContour& contour = *waved[entry.first];
-      build(contour, context);
-      lines[entry.first] = sampleWave(*contour.wave, parameters[entry.first]);
+    if (outcome.changed.empty()) break;
+    for (const auto& entry : outcome.changed) {
+      build(*waved[entry.first], context);
+      drawn.rebuilt(entry.first);
+      if (dense) dense->rebuilt(entry.first);
     }
   }
-  return left;
+  return outcome.left;
 }
 
 void finishReport(const WavedContour& contour, const Polyline& original, double px_per_mm,

@@ -3,14 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vicc_glyphs/dci/flattening.hpp"
+
 namespace vicc_glyphs {
 namespace {
-
-// Flattening tolerance (grid pixels) and the longest straight piece: short pieces keep the
-// curve parameter, which is interpolated linearly along a piece, close to the true one.
-constexpr double kFlatnessTolerance = 0.02;
-constexpr double kMaxPieceLength = 2.0;
-constexpr int kMaxPiecesPerSegment = 4096;
 
 struct CurveSample {
   Point2 point;
@@ -91,17 +87,6 @@ class CrossingCollector {
   const std::function<void(const LatticeCrossing&)>& visit_;
 };
 
-int pieceCount(const Point2* b) {
-  const double bend =
-      std::max((b[0] - 2.0 * b[1] + b[2]).norm(), (b[1] - 2.0 * b[2] + b[3]).norm());
-  const double polygon = (b[1] - b[0]).norm() + (b[2] - b[1]).norm() + (b[3] - b[2]).norm();
-  // A cubic flattened into n uniform pieces deviates at most 0.75 * bend / n^2.
-  const double by_flatness = std::sqrt(0.75 * bend / kFlatnessTolerance);
-  const double by_length = polygon / kMaxPieceLength;
-  const double pieces = std::ceil(std::max({1.0, by_flatness, by_length}));
-  return static_cast<int>(std::min(pieces, static_cast<double>(kMaxPiecesPerSegment)));
-}
-
 bool outsideGrid(const Point2* b, int width, int height) {
   double min_x = b[0].x(), max_x = b[0].x(), min_y = b[0].y(), max_y = b[0].y();
   for (int k = 1; k < 4; ++k) {
@@ -121,12 +106,6 @@ bool outsideGrid(const Point2* b, int width, int height) {
 Point2 snapped(const Point2& p) {
   constexpr double kSnap = 1024.0;
   return Point2(std::round(p.x() * kSnap) / kSnap, std::round(p.y() * kSnap) / kSnap);
-}
-
-Point2 bezier(const Point2* b, double t) {
-  const double u = 1.0 - t;
-  return snapped(u * u * u * b[0] + 3.0 * u * u * t * b[1] + 3.0 * u * t * t * b[2] +
-                 t * t * t * b[3]);
 }
 
 // A curve that ends outside the image is meant to leave it. On a coarse grid the last pixel
@@ -175,11 +154,12 @@ void forEachLatticeCrossing(const DiffusionCurveImage& image, double scale, int 
         continue;
       }
       if (outsideGrid(b, width, height)) continue;
-      const int pieces = pieceCount(b);
+      // As PACEMOD's polygon checks (flattening.hpp).
+      const int pieces = flatteningPieces(b, segmentBesideFold(curve, k));
       CurveSample previous{snapped(b[0]), static_cast<double>(k)};
       for (int p = 1; p <= pieces; ++p) {
         const double t = static_cast<double>(p) / pieces;
-        const CurveSample next{bezier(b, t), k + t};
+        const CurveSample next{snapped(bezierPoint(b, t)), k + t};
         collector.addPiece(previous, next);
         previous = next;
       }

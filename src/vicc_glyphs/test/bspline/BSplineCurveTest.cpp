@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "vicc_glyphs/bspline/bezier_conversion.hpp"
 #include "vicc_glyphs/bspline/bspline_curve.hpp"
 
 namespace vicc_glyphs {
@@ -33,6 +34,33 @@ TEST(BSplineCurveTest, SpanSamplesArePointAtOfEachPieceInOrder) {
     EXPECT_EQ(points[i], curve.pointAt(parameters[i])) << i;  // the same arithmetic
   }
   EXPECT_THROW(curve.sampleSpans(0, parameters), std::invalid_argument);
+}
+
+// The polygon check searches a wave's spline flattened by flattenSpans; the renderer draws the
+// Bezier chain it becomes, flattened by flattenCurve. Both must be the same polyline, also at a
+// corner where the curve folds back (16 pieces on both sides of it).
+TEST(BSplineCurveTest, FlattenedSpansAreTheFlattenedBezierChain) {
+  const BSplineCurve curve(
+      3, {0, 0, 0, 0, 1, 2, 2, 2, 3, 4, 4, 4, 4},
+      {{0, 0}, {4, 1}, {8, 3}, {10, 6}, {10.2, 6.1}, {9, 5}, {6, 6}, {3, 9}, {0, 8}});
+  ASSERT_EQ(curve.multiplicity(2), 3);  // a corner at u = 2, where the curve turns back
+  std::vector<double> parameters;
+  const std::vector<Point2> spans = curve.flattenSpans(parameters);
+  DiffusionCurve chain;
+  chain.control_points = bsplineToBezierChain(curve).control_points;
+  std::vector<double> positions;
+  const std::vector<Point2> drawn = flattenCurve(chain, &positions);
+  ASSERT_EQ(chain.segmentCount(), 4);
+  EXPECT_TRUE(segmentBesideFold(chain, 1));
+  EXPECT_TRUE(segmentBesideFold(chain, 2));
+  ASSERT_EQ(spans.size(), drawn.size());
+  for (std::size_t i = 0; i < spans.size(); ++i) {
+    EXPECT_LT((spans[i] - drawn[i]).norm(), 1e-9) << i;
+    EXPECT_NEAR(parameters[i], positions[i], 1e-12) << i;  // one unit of u per segment here
+  }
+  EXPECT_THROW(
+      BSplineCurve(2, {0, 0, 0, 1, 1, 1}, {{0, 0}, {1, 1}, {2, 0}}).flattenSpans(parameters),
+      std::invalid_argument);
 }
 
 TEST(BSplineCurveTest, PointsOfSortedParametersArePointAtOfEach) {

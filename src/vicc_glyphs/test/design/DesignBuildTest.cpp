@@ -7,8 +7,10 @@
 #include "../../src/design/gradient_channels.hpp"
 #include "../support/straight_chain.hpp"
 #include "shipped_designs.hpp"
+#include "vicc_glyphs/dci/flattening.hpp"
 #include "vicc_glyphs/design/design_builder.hpp"
 #include "vicc_glyphs/pacemod/dashes.hpp"
+#include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 #include "vicc_glyphs/render/renderer.hpp"
 
 using namespace vicc_glyphs;
@@ -405,6 +407,38 @@ TEST(DesignBuild, TheCloudsUndersideKeepsItsColourAboveTheDrops) {
         }
       }
       EXPECT_LT(worst, 0.02f) << name << ", amount " << amount;
+    }
+  }
+}
+
+// Where a glyph's curves cross themselves as the renderer draws them, it puts their two sides
+// the wrong way round: a smudge of one side's colour in the other. The COVID-19 glyph with its
+// largest triangle waves had such crossings (found over all 900 level combinations at 96, 192
+// and 512 px): thin folds of the waved outline at its concave corners that the polygon check's
+// 16 points per segment did not resolve (teal smudges in the white around the glyph), and the
+// band's inset edge looping over a crack of the inset region and over its cusps.
+TEST(DesignBuild, CovidGlyphsDoNotCrossThemselvesAsDrawn) {
+  const GlyphDesign design = shipped("covid19_gradient");
+  struct Case {
+    double incidence, hospitalisation, incidence_change, hospitalisation_change;
+    int size;
+  };
+  // Each crossed before (outline folds at 512 px; the band's edge at 512 and at 96 px).
+  for (const Case& c : {Case{400, 3.5, 15, 30, 512}, Case{700, 6, 15, 30, 512},
+                        Case{75, 6, 15, 30, 512}, Case{400, 2.5, -5, -30, 96}}) {
+    const DiffusionCurveImage glyph =
+        buildGlyph(design,
+                   design.levelsFor({{"incidence", c.incidence},
+                                     {"hospitalisation", c.hospitalisation},
+                                     {"incidence_change", c.incidence_change},
+                                     {"hospitalisation_change", c.hospitalisation_change}}),
+                   model(), c.size);
+    std::vector<pacemod::Polyline> lines;
+    for (const DiffusionCurve& curve : glyph.curves) lines.push_back(flattenCurve(curve));
+    for (const pacemod::Crossing& x : pacemod::findCrossings(lines)) {
+      ADD_FAILURE() << "incidence " << c.incidence << ", its change " << c.incidence_change << ", "
+                    << c.size << " px: curve " << x.a.line << " crosses curve " << x.b.line
+                    << " at (" << pacemod::crossingPoint(lines, x).transpose() << ")";
     }
   }
 }

@@ -6,7 +6,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "vicc_glyphs/dci/flattening.hpp"
 #include "vicc_glyphs/pacemod/offset_contour.hpp"
+#include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 
 namespace vicc_glyphs {
 namespace pacemod {
@@ -179,6 +181,97 @@ TEST(OffsetContourTest, ClosedBezierFitIsAClosedChainOnTheLine) {
     EXPECT_NEAR((p - Point2(100, 100)).norm(), 40.0, 0.05);
   }
   EXPECT_THROW(closedBezierFit({{0, 0}, {1, 0}, {0, 0}}), std::invalid_argument);
+}
+
+// The boundary of two overlapping discs (radius 20, centres 30 px apart), clockwise on screen,
+// points about 0.25 px apart: two concave corners where the circles meet, turning by 97 deg.
+Polyline twoDiscs() {
+  const Point2 left(40, 50), right(70, 50);
+  const double half = std::acos(15.0 / 20.0);  // the meeting points' angle from the x axis
+  Polyline line;
+  const int steps = 400;
+  for (int i = 0; i <= steps; ++i) {  // the left disc's arc, from the lower to the upper point
+    const double a = half + (2 * M_PI - 2 * half) * i / steps;
+    line.emplace_back(left.x() + 20 * std::cos(a), left.y() + 20 * std::sin(a));
+  }
+  for (int i = 1; i < steps; ++i) {  // the right disc's arc back
+    const double a = M_PI + half + (2 * M_PI - 2 * half) * i / steps;
+    line.emplace_back(right.x() + 20 * std::cos(a), right.y() + 20 * std::sin(a));
+  }
+  line.push_back(line.front());
+  return line;
+}
+
+double distanceToCurve(const Point2& point, const DiffusionCurve& curve) {
+  return distanceToPolyline(point, sampleCurve(curve, 64));
+}
+
+// A smooth fit rounds a concave corner off by knot spans (and a cusp into a loop); the chain
+// keeps a corner through it and lies on the line elsewhere.
+TEST(OffsetContourTest, ClosedBezierFitKeepsSharpCorners) {
+  const Polyline line = twoDiscs();
+  DiffusionCurve curve;
+  curve.control_points = closedBezierFit(line);
+  const double y = std::sqrt(20.0 * 20.0 - 15.0 * 15.0);
+  for (const Point2& corner : {Point2(55, 50 - y), Point2(55, 50 + y)}) {
+    EXPECT_LT(distanceToCurve(corner, curve), 0.05) << corner.transpose();
+  }
+  for (std::size_t i = 0; i < line.size(); i += 7) {
+    EXPECT_LT(distanceToCurve(line[i], curve), 0.05) << line[i].transpose();
+  }
+  EXPECT_TRUE(findCrossings({flattenCurve(curve)}).empty());
+}
+
+Polyline square(double side) {
+  Polyline line;
+  for (int i = 0; i < 4 * 40; ++i) {  // 40 points per side, clockwise on screen from (0, 0)
+    const double t = side * (i % 40) / 40.0;
+    const Point2 corner[4] = {{0, 0}, {side, 0}, {side, side}, {0, side}};
+    const Point2 along[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    line.push_back(corner[i / 40] + t * along[i / 40]);
+  }
+  line.push_back(line.front());
+  return line;
+}
+
+// Inserts after point `at` of a closed line a spike into the square (+y), `length` px long,
+// `width` px wide at its base: a triangle, or with `flat_top` a finger of that width throughout.
+Polyline withSpike(Polyline line, std::size_t at, double length, double width, bool flat_top) {
+  const Point2 base = line[at];
+  Polyline spike;
+  const double narrowing = flat_top ? 0.0 : 0.5 * width;
+  for (int k = 1; k <= 8; ++k) spike.push_back(base + Point2(narrowing * k / 8, length * k / 8));
+  for (int k = flat_top ? 8 : 7; k >= 0; --k) {
+    spike.push_back(base + Point2(width - narrowing * k / 8, length * k / 8));
+  }
+  line.insert(line.begin() + at + 1, spike.begin(), spike.end());
+  return line;
+}
+
+TEST(OffsetContourTest, HairsAreCutAndFingersKept) {
+  const Polyline plain = square(40);  // point 10 is (10, 0), the next (11, 0)
+  const Polyline hair = withoutHairs(withSpike(plain, 10, 10.0, 0.05, false));
+  EXPECT_EQ(hair.size(), plain.size() + 1);  // the spike's last point, 0.05 px from its base
+  for (const Point2& p : hair) {
+    EXPECT_FALSE(p.x() > 0.5 && p.x() < 39.5 && p.y() > 0.5 && p.y() < 39.5) << p.transpose();
+  }
+  // A finger 1 px wide encloses area: it is part of the region.
+  const Polyline finger = withSpike(plain, 10, 10.0, 1.0, true);
+  EXPECT_EQ(withoutHairs(finger).size(), finger.size());
+  EXPECT_EQ(withoutHairs(plain).size(), plain.size());
+}
+
+TEST(OffsetContourTest, SmallLoopsAreCutAtTheirCrossing) {
+  Polyline line = square(40);
+  // A loop of about 0.6 px after point 10: over to the right, down, back left across the side.
+  const Point2 at = line[10];
+  line.insert(line.begin() + 11, {at + Point2(0.3, 0), at + Point2(0.3, 0.2), at + Point2(0.1, 0.2),
+                                  at + Point2(0.15, -0.1), at + Point2(0.4, -0.1)});
+  ASSERT_FALSE(findCrossings({line}).empty());
+  const Polyline cut = withoutSmallLoops(line);
+  EXPECT_TRUE(findCrossings({cut}).empty());
+  EXPECT_LT(cut.size(), line.size());
+  EXPECT_LT((cut.front() - cut.back()).norm(), 1e-12);
 }
 
 }  // namespace

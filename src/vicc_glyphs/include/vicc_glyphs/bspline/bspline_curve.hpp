@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
+#include "vicc_glyphs/dci/flattening.hpp"
 
 namespace vicc_glyphs {
 namespace bspline {
@@ -80,6 +81,12 @@ class BSplineCurve {
   /// parameters from its start, then the domain end; their parameters go to `parameters`. The
   /// points equal pointAt's; the pieces are walked in order instead of searched per point.
   std::vector<Point2> sampleSpans(int per_span, std::vector<double>& parameters) const;
+  /// A cubic's polynomial pieces flattened as the renderer flattens the Bezier segments they
+  /// become (dci/flattening.hpp): each piece in flatteningPieces uniform steps of its Bezier
+  /// points, then the domain end; their parameters go to `parameters`. Throws
+  /// std::invalid_argument for another degree.
+  std::vector<Point2> flattenSpans(std::vector<double>& parameters,
+                                   const Flattening& flattening = {}) const;
   /// pointAt for each of `parameters`, which must not decrease (std::invalid_argument
   /// otherwise): the knot spans are walked in order instead of searched per point.
   std::vector<Point2> pointsAt(const std::vector<double>& parameters) const;
