@@ -29,50 +29,57 @@ double lengthOf(const Polyline& line) {
   return length;
 }
 
-// The least-squares cubic with knots about `knot_spacing` apart, closed at its start with equal
-// end tangents; `line` is closed (first == last point).
-std::vector<Point2> fitClosedChain(const Polyline& line, double knot_spacing) {
-  const int spans = std::clamp(static_cast<int>(std::lround(lengthOf(line) / knot_spacing)), 4,
-                               static_cast<int>(line.size()) / 2);
-  const std::vector<double> parameters = bspline::chordLengthParameters(line, 0.0, 1.0);
+// The least-squares cubic on `spans` uniform knot spans (clamped) of the points of `line` at
+// their chord-length parameters in [0, 1].
+bspline::BSplineCurve leastSquaresCubic(const Polyline& line, int spans) {
   const std::vector<double> knots =
       bspline::BSplineCurve::clampedUniformKnots(3, spans + 3, 0.0, 1.0);
   // Banded normal equations: tens of points per span determine the curve well, and a sparse QR
   // of a traced isoline (thousands of points) cost as much as the distance transform.
   const bspline::CubicLeastSquares solver(
       bspline::BSplineCurve(3, knots, std::vector<Point2>(knots.size() - 4, Point2::Zero())),
-      parameters);
+      bspline::chordLengthParameters(line, 0.0, 1.0));
   Eigen::MatrixX2d targets(static_cast<Eigen::Index>(line.size()), 2);
   for (std::size_t i = 0; i < line.size(); ++i) targets.row(static_cast<Eigen::Index>(i)) = line[i];
-  bspline::BSplineCurve fit(3, knots, solver.solvePoints(targets));
+  return bspline::BSplineCurve(3, knots, solver.solvePoints(targets));
+}
+
+// The least-squares cubic with knots about `knot_spacing` apart, closed at its start with equal
+// end tangents; `line` is closed (first == last point).
+std::vector<Point2> fitClosedChain(const Polyline& line, double knot_spacing) {
+  const int spans = std::clamp(static_cast<int>(std::lround(lengthOf(line) / knot_spacing)), 4,
+                               static_cast<int>(line.size()) / 2);
+  const bspline::BSplineCurve fit = leastSquaresCubic(line, spans);
   // Close it exactly with equal end tangents (the fit leaves both ends free).
   const Point2 start = 0.5 * (fit.pointAt(0.0) + fit.pointAt(1.0));
   const Point2 tangent = 0.5 * (fit.derivativeAt(0.0) + fit.derivativeAt(1.0));
-  fit = bspline::fowlerBartelsModify(
-      fit, {{0.0, start, 0}, {1.0, start, 0}, {0.0, tangent, 1}, {1.0, tangent, 1}});
-  return bspline::bsplineToBezierChain(fit).control_points;
+  return bspline::bsplineToBezierChain(
+             bspline::fowlerBartelsModify(
+                 fit, {{0.0, start, 0}, {1.0, start, 0}, {0.0, tangent, 1}, {1.0, tangent, 1}}))
+      .control_points;
 }
 
 // The least-squares cubic through both end points of the open `piece`, knots about
-// `knot_spacing` apart (at least 4 points per span); a straight segment for a piece too short
-// to determine a curve.
+// `knot_spacing` apart (at least 4 points per span; fewer spans where the points leave one
+// undetermined); a straight segment for a piece too short to determine a curve.
 std::vector<Point2> fitOpenChain(const Polyline& piece, double knot_spacing) {
   const Point2 a = piece.front(), b = piece.back();
-  const int spans = std::min(static_cast<int>(std::lround(lengthOf(piece) / knot_spacing)),
-                             static_cast<int>(piece.size()) / 4);
-  if (spans < 1) return {a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b};
-  const std::vector<double> knots =
-      bspline::BSplineCurve::clampedUniformKnots(3, spans + 3, 0.0, 1.0);
-  const bspline::CubicLeastSquares solver(
-      bspline::BSplineCurve(3, knots, std::vector<Point2>(knots.size() - 4, Point2::Zero())),
-      bspline::chordLengthParameters(piece, 0.0, 1.0));
-  Eigen::MatrixX2d targets(static_cast<Eigen::Index>(piece.size()), 2);
-  for (std::size_t i = 0; i < piece.size(); ++i) {
-    targets.row(static_cast<Eigen::Index>(i)) = piece[i];
+  for (int spans = std::min(static_cast<int>(std::lround(lengthOf(piece) / knot_spacing)),
+                            static_cast<int>(piece.size()) / 4);
+       spans >= 1; spans /= 2) {
+    try {
+      std::vector<Point2> chain = bspline::bsplineToBezierChain(
+                                      bspline::fowlerBartelsModify(leastSquaresCubic(piece, spans),
+                                                                   {{0.0, a, 0}, {1.0, b, 0}}))
+                                      .control_points;
+      if (std::all_of(chain.begin(), chain.end(), [](const Point2& p) { return p.allFinite(); })) {
+        return chain;
+      }
+    } catch (const std::invalid_argument&) {
+      // A span without enough points: try fewer.
+    }
   }
-  const bspline::BSplineCurve fit = bspline::fowlerBartelsModify(
-      bspline::BSplineCurve(3, knots, solver.solvePoints(targets)), {{0.0, a, 0}, {1.0, b, 0}});
-  return bspline::bsplineToBezierChain(fit).control_points;
+  return {a, a + (b - a) / 3.0, a + 2.0 * (b - a) / 3.0, b};
 }
 
 // The distinct points of a closed line (its last point repeats the first) and the arc length

@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 
@@ -329,8 +330,9 @@ Polyline withoutSmallLoops(Polyline line) {
     for (const Crossing& crossing : findCrossings({line})) {
       const int first = crossing.a.segment, last = crossing.b.segment;  // first < last
       double loop = 0.0;
-      for (int i = first + 1; i < last && loop <= kLoopPx; ++i)
+      for (int i = first + 1; i < last && loop <= kLoopPx; ++i) {
         loop += (line[i + 1] - line[i]).norm();
+      }
       if (loop > kLoopPx) continue;  // a loop across the closing point, or a large one: kept
       const Point2 at = crossingPoint({line}, crossing);
       line.erase(line.begin() + first + 1, line.begin() + last + 1);
@@ -352,31 +354,46 @@ Polyline withoutHairs(const Polyline& line) {
   constexpr double kLongestHairPx = 80.0;  // both sides
   if (line.size() < 5) return line;
   const std::vector<Point2> ring(line.begin(), line.end() - 1);
-  const std::size_t n = ring.size();
-  std::vector<double> at(n + 1, 0.0);  // arc length at each point, and the whole length
-  for (std::size_t i = 0; i < n; ++i) at[i + 1] = at[i] + (ring[(i + 1) % n] - ring[i]).norm();
-  std::vector<char> removed(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (removed[i]) continue;
-    // The farthest point along the line (within the longest hair) that comes back to ring[i].
-    std::size_t tip_end = i;
-    double area = 0.0;  // of the polygon ring[i] ... ring[j], closed by the gap
-    for (std::size_t step = 1, j = (i + 1) % n; step < n && j != i; ++step, j = (j + 1) % n) {
-      const std::size_t previous = (j + n - 1) % n;
-      area += cross(ring[previous] - ring[i], ring[j] - ring[i]);
-      const double along = at[j] - at[i] + (j < i ? at[n] : 0.0);
-      // Past this point the line cannot come back to ring[i] within the longest hair.
-      if (along + (ring[j] - ring[i]).norm() > kLongestHairPx) break;
-      if (along > 2.0 * kHairWidthPx && (ring[j] - ring[i]).norm() < kHairWidthPx &&
-          0.5 * std::abs(area) < kHairWidthPx * along) {
-        tip_end = j;
+  const long n = static_cast<long>(ring.size());
+  // Arc length at each point and the prefix sums of the shoelace terms (the whole at n).
+  std::vector<double> at(n + 1, 0.0), shoelace(n + 1, 0.0);
+  for (long i = 0; i < n; ++i) {
+    const Point2 &p = ring[i], &q = ring[(i + 1) % n];
+    at[i + 1] = at[i] + (q - p).norm();
+    shoelace[i + 1] = shoelace[i] + cross(p, q);
+  }
+  const auto forward = [&](const std::vector<double>& sums, long i, long j) {
+    return j >= i ? sums[j] - sums[i] : sums[n] - sums[i] + sums[j];
+  };
+  // Per point the farthest point along the line that ends a hair from it. A hair's two ends lie
+  // within its width: a sweep over the points in x order meets every such pair.
+  std::vector<long> by_x(n);
+  for (long i = 0; i < n; ++i) by_x[i] = i;
+  std::sort(by_x.begin(), by_x.end(), [&](long a, long b) { return ring[a].x() < ring[b].x(); });
+  std::vector<long> tip_end(n, -1);
+  std::vector<double> longest(n, 0.0);
+  for (long a = 0; a < n; ++a) {
+    for (long b = a + 1; b < n && ring[by_x[b]].x() - ring[by_x[a]].x() < kHairWidthPx; ++b) {
+      const long p = by_x[a], q = by_x[b];
+      if ((ring[q] - ring[p]).norm() >= kHairWidthPx) continue;
+      for (const auto& [i, j] : {std::make_pair(p, q), std::make_pair(q, p)}) {
+        const double along = forward(at, i, j);  // from i forward to j
+        if (along <= 2.0 * kHairWidthPx || along > kLongestHairPx || along <= longest[i]) continue;
+        const double area = 0.5 * std::abs(forward(shoelace, i, j) + cross(ring[j], ring[i]));
+        if (area < kHairWidthPx * along) {
+          tip_end[i] = j;
+          longest[i] = along;
+        }
       }
     }
-    if (tip_end == i) continue;
-    for (std::size_t j = (i + 1) % n; j != tip_end; j = (j + 1) % n) removed[j] = 1;
+  }
+  std::vector<char> removed(n, 0);
+  for (long i = 0; i < n; ++i) {
+    if (removed[i] || tip_end[i] < 0) continue;
+    for (long j = (i + 1) % n; j != tip_end[i]; j = (j + 1) % n) removed[j] = 1;
   }
   Polyline kept;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (long i = 0; i < n; ++i) {
     if (!removed[i]) kept.push_back(ring[i]);
   }
   if (kept.size() < 4) return line;
