@@ -35,7 +35,7 @@ if(TARGET vicc_glyph)
   target_compile_definitions(vicc_glyphs_design_bench PRIVATE
     VICC_GLYPHS_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config"
     VICC_GLYPHS_DESIGNS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/designs")
-  target_link_libraries(vicc_glyphs_design_bench vicc_glyphs_design vicc_glyphs_render
+  target_link_libraries(vicc_glyphs_design_bench vicc_glyphs_design vicc_glyphs_pacemod vicc_glyphs_render
     vicc_common_cli)
 endif()
 

@@ -13,8 +13,10 @@
 
 #include "bench_timing.hpp"
 #include "vicc_common/command_line.hpp"
+#include "vicc_glyphs/dci/flattening.hpp"
 #include "vicc_glyphs/design/design_builder.hpp"
 #include "vicc_glyphs/design/glyph_design.hpp"
+#include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 #include "vicc_glyphs/perception/perception_model_yaml.hpp"
 #include "vicc_glyphs/render/renderer.hpp"
 
@@ -30,7 +32,16 @@ struct DesignTimes {
   int size = 0;
   double import_ms = 0.0;
   std::vector<double> build_ms, render_ms, total_ms;
+  int crossing_glyphs = 0;  ///< glyphs whose curves cross as drawn where the icon's do not
 };
+
+// Proper crossings of the curves as the renderer draws them (dci/flattening.hpp): where the
+// renderer would put a curve's sides the wrong way round, a smudge.
+int crossingsAsDrawn(const DiffusionCurveImage& image) {
+  std::vector<pacemod::Polyline> lines;
+  for (const DiffusionCurve& curve : image.curves) lines.push_back(flattenCurve(curve));
+  return static_cast<int>(pacemod::findCrossings(lines).size());
+}
 
 // Every combination of levels (odometer order, the first variable fastest).
 std::vector<std::vector<int>> levelCombinations(const design::GlyphDesign& glyph) {
@@ -52,6 +63,7 @@ DesignTimes measureDesign(const design::GlyphDesign& glyph,
   const double import_start = bench::threadCpuMilliseconds();
   const DiffusionCurveImage icon = design::loadIcon(glyph, t.size);
   t.import_ms = bench::threadCpuMilliseconds() - import_start;
+  const int icon_crossings = crossingsAsDrawn(icon);
   RenderOptions options;
   options.background = glyph.background;
   RenderResult result;
@@ -64,12 +76,14 @@ DesignTimes measureDesign(const design::GlyphDesign& glyph,
     t.build_ms.push_back(built - start);
     t.render_ms.push_back(end - built);
     t.total_ms.push_back(end - start);
+    const int crossings = crossingsAsDrawn(image);  // not timed
+    t.crossing_glyphs += crossings > icon_crossings;
     if (times) {
       std::string key;
       for (int level : levels) key += (key.empty() ? "" : ",") + std::to_string(level);
-      std::fprintf(times, "%s\t%d\t%s\t%.2f\t%.2f\t%.2f\t%d\n", glyph.name.c_str(), t.size,
+      std::fprintf(times, "%s\t%d\t%s\t%.2f\t%.2f\t%.2f\t%d\t%d\n", glyph.name.c_str(), t.size,
                    key.c_str(), built - start, end - built, end - start,
-                   result.report.multigrid.fine_cycles);
+                   result.report.multigrid.fine_cycles, crossings);
     }
   }
   return t;
@@ -78,11 +92,12 @@ DesignTimes measureDesign(const design::GlyphDesign& glyph,
 void printRow(const std::string& name, const DesignTimes& t) {
   int over = 0;
   for (double ms : t.total_ms) over += ms > kGoalMs;
-  std::printf("| %s | %d | %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %d |\n",
-              name.c_str(), t.size, t.total_ms.size(), t.import_ms, bench::median(t.build_ms),
-              bench::percentile95(t.build_ms), bench::median(t.render_ms),
-              bench::percentile95(t.render_ms), bench::median(t.total_ms),
-              bench::percentile95(t.total_ms), bench::maximum(t.total_ms), over);
+  std::printf(
+      "| %s | %d | %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %d | %d |\n",
+      name.c_str(), t.size, t.total_ms.size(), t.import_ms, bench::median(t.build_ms),
+      bench::percentile95(t.build_ms), bench::median(t.render_ms), bench::percentile95(t.render_ms),
+      bench::median(t.total_ms), bench::percentile95(t.total_ms), bench::maximum(t.total_ms), over,
+      t.crossing_glyphs);
 }
 
 const std::vector<cli::OptionSpec> kOptionSpecs = {
@@ -122,7 +137,8 @@ int run(const std::vector<std::string>& args) {
     times.reset(std::fopen(parsed.value("times").c_str(), "w"));
     if (!times) throw std::runtime_error("cannot write " + parsed.value("times"));
     std::fprintf(times.get(),
-                 "design\tsize_px\tlevels\tbuild_ms\trender_ms\ttotal_ms\tcg_iterations\n");
+                 "design\tsize_px\tlevels\tbuild_ms\trender_ms\ttotal_ms\tcg_iterations\t"
+                 "crossings_as_drawn\n");
   }
   cv::setNumThreads(1);  // one core: OpenCV's distance transforms would use every core
   const perception::PerceptionModel model = perception::loadPerceptionModel(model_path);
@@ -133,7 +149,7 @@ int run(const std::vector<std::string>& args) {
   std::printf(
       "| design | size px | glyphs | import ms (once) | build ms median | build ms p95 | render ms "
       "median | render ms p95 | total ms median | total ms p95 | total ms max | over %.0f ms "
-      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+      "| crossing as drawn |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
       kGoalMs);
   for (const fs::path& path : designs) {
     const design::GlyphDesign glyph = design::loadDesign(path.string(), model);
