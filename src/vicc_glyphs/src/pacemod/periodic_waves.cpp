@@ -110,6 +110,11 @@ class ContourPolygons {
  public:
   enum class Sampling { kAsDrawn, kDense };
 
+  /// An unwaved curve's polygon in `sampling`.
+  static Polyline polygonOf(const DiffusionCurve& curve, Sampling sampling) {
+    return sampling == Sampling::kAsDrawn ? flattenCurve(curve) : sampleCurve(curve, 16);
+  }
+
   ContourPolygons(const DiffusionCurveImage& image,
                   const std::map<int, std::unique_ptr<WavedContour>>& waved, Sampling sampling)
       : image_(image),
@@ -124,13 +129,12 @@ class ContourPolygons {
       if (!stale_[i]) continue;
       stale_[i] = 0;
       const auto found = waved_.find(static_cast<int>(i));
-      const bool drawn = sampling_ == Sampling::kAsDrawn;
       if (found == waved_.end()) {
-        lines_[i] = drawn ? flattenCurve(image_.curves[i]) : sampleCurve(image_.curves[i], 16);
+        lines_[i] = polygonOf(image_.curves[i], sampling_);
       } else {
         const bspline::BSplineCurve& curve = found->second->wave->curve;
-        lines_[i] =
-            drawn ? curve.flattenSpans(parameters_[i]) : curve.sampleSpans(16, parameters_[i]);
+        lines_[i] = sampling_ == Sampling::kAsDrawn ? curve.flattenSpans(parameters_[i])
+                                                    : curve.sampleSpans(16, parameters_[i]);
       }
     }
     return lines_;
@@ -183,10 +187,11 @@ void capAround(WavedContour& contour, double u, bool last_round) {
 class InheritedCrossings {
  public:
   InheritedCrossings(const DiffusionCurveImage& image, CrossingFinder& finder) {
-    for (const bool drawn : {true, false}) {  // as the two samplings of ContourPolygons
+    for (const auto sampling :
+         {ContourPolygons::Sampling::kAsDrawn, ContourPolygons::Sampling::kDense}) {
       std::vector<Polyline> lines;
       for (const DiffusionCurve& curve : image.curves) {
-        lines.push_back(drawn ? flattenCurve(curve) : sampleCurve(curve, 16));
+        lines.push_back(ContourPolygons::polygonOf(curve, sampling));
       }
       for (const Crossing& crossing : finder.find(lines, kCrossingCellPx)) {
         points_[{crossing.a.line, crossing.b.line}].push_back(crossingPoint(lines, crossing));
