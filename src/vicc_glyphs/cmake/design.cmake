@@ -12,6 +12,7 @@ add_library(vicc_glyphs_design
   src/design/design_values.cpp
   src/design/gradient_channels.cpp
   src/design/design_builder.cpp
+  src/design/design_check.cpp
 )
 target_compile_options(vicc_glyphs_design PRIVATE ${VICC_WARNINGS})
 target_link_libraries(vicc_glyphs_design vicc_glyphs_pacemod vicc_glyphs_perception
@@ -23,7 +24,8 @@ install(TARGETS vicc_glyphs_design
 install(DIRECTORY designs DESTINATION ${CATKIN_PACKAGE_SHARE_DESTINATION})
 
 if(TARGET vicc_glyph)
-  target_sources(vicc_glyph PRIVATE src/tools/design_command.cpp src/tools/design_map_command.cpp)
+  target_sources(vicc_glyph PRIVATE src/tools/design_command.cpp src/tools/design_map_command.cpp
+    src/tools/check_design_command.cpp)
   target_link_libraries(vicc_glyph vicc_glyphs_design)
 endif()
 

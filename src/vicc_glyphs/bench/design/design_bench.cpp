@@ -15,6 +15,7 @@
 #include "vicc_common/command_line.hpp"
 #include "vicc_glyphs/dci/flattening.hpp"
 #include "vicc_glyphs/design/design_builder.hpp"
+#include "vicc_glyphs/design/design_check.hpp"
 #include "vicc_glyphs/design/glyph_design.hpp"
 #include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 #include "vicc_glyphs/perception/perception_model_yaml.hpp"
@@ -43,18 +44,6 @@ int crossingsAsDrawn(const DiffusionCurveImage& image) {
   return static_cast<int>(pacemod::findCrossings(lines).size());
 }
 
-// Every combination of levels (odometer order, the first variable fastest).
-std::vector<std::vector<int>> levelCombinations(const design::GlyphDesign& glyph) {
-  std::vector<std::vector<int>> all;
-  std::vector<int> levels(glyph.variables.size(), 0);
-  for (;;) {
-    all.push_back(levels);
-    std::size_t v = 0;
-    while (v < levels.size() && ++levels[v] == glyph.variables[v].levelCount()) levels[v++] = 0;
-    if (v == levels.size()) return all;
-  }
-}
-
 DesignTimes measureDesign(const design::GlyphDesign& glyph,
                           const perception::PerceptionModel& model, int size,
                           DiffusionCurveRenderer& renderer, std::FILE* times) {
@@ -67,7 +56,7 @@ DesignTimes measureDesign(const design::GlyphDesign& glyph,
   RenderOptions options;
   options.background = glyph.background;
   RenderResult result;
-  for (const std::vector<int>& levels : levelCombinations(glyph)) {
+  for (const std::vector<int>& levels : design::allLevelCombinations(glyph)) {
     const double start = bench::threadCpuMilliseconds();
     const DiffusionCurveImage image = design::buildGlyph(glyph, levels, model, icon);
     const double built = bench::threadCpuMilliseconds();

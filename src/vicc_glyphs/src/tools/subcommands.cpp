@@ -1,3 +1,4 @@
+#include "check_design_command.hpp"
 #include "design_command.hpp"
 #include "design_map_command.hpp"
 #include "fit_command.hpp"
@@ -15,6 +16,8 @@ const std::vector<Subcommand>& subcommands() {
       {"design", "render a glyph design (YAML) for data values", &runDesignCommand},
       {"design-map", "one glyph per table row, placed by lon/lat, on one PNG",
        &runDesignMapCommand},
+      {"check-design", "build every level combination of a design; list those that fail",
+       &runCheckDesignCommand},
       {"fit-model", "fit the perception model to survey answers (CSV)", &runFitCommand},
       {"modify", "PACEMOD waves, dashes, inflate on an icon; PNG + DCI + report",
        &runModifyCommand},

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 #include <utility>
@@ -223,4 +224,44 @@ TEST_F(DesignCliTest, MapAcceptsWindowsLineEndsAndByteOrderMark) {
   // Spreadsheets also start the file with a UTF-8 byte order mark.
   const auto bom = map("A,8,50,95,1\r\n", "", "\xEF\xBB\xBFlabel,lon,lat,probability,amount\r\n");
   EXPECT_EQ(bom.exit_code, 0) << bom.err;
+}
+
+TEST_F(DesignCliTest, CheckDesignBuildsEveryLevelCombination) {
+  const auto result = run("check-design " + design("rain_forecast_sine") + " --size 96");
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("rain_forecast_sine at 96 px: all 15 level combinations build"),
+            std::string::npos)
+      << result.out;
+}
+
+// A design that loads but fails for some data: the heavy-rain drops inflated by 3.5 mm leave
+// the frame. The glyph server would meet that only when heavy rain is forecast.
+TEST_F(DesignCliTest, CheckDesignListsTheLevelsThatFail) {
+  std::ifstream shipped(design("rain_forecast_sine"));
+  std::string text((std::istreambuf_iterator<char>(shipped)), std::istreambuf_iterator<char>());
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"icon: icons/", "icon: " + std::string(VICC_GLYPHS_DESIGNS_DIR) + "/icons/"},
+           {"offsets_mm: [-0.8, 0.0, 0.8]", "offsets_mm: [-0.8, 0.0, 3.5]"}}) {
+    const std::size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  }
+  std::ofstream(dir_ / "rain_forecast_sine.yaml") << text;
+  const auto result =
+      run("check-design " + (dir_ / "rain_forecast_sine.yaml").string() + " --size 96");
+  EXPECT_EQ(result.exit_code, 1) << result.err;
+  EXPECT_NE(result.out.find("5 of 15 level combinations fail"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("probability level 4 [90, 100], amount level 2 [7.6, 200]: "),
+            std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("out of the 96 x 96 px frame"), std::string::npos) << result.out;
+  EXPECT_EQ(result.out.find("amount level 1"), std::string::npos) << result.out;
+}
+
+TEST_F(DesignCliTest, CheckDesignUsageErrors) {
+  EXPECT_EQ(run("check-design").exit_code, 2);
+  EXPECT_EQ(run("check-design " + design("rain_forecast_sine") + " --size 8").exit_code, 2);
+  const auto missing = run("check-design " + (dir_ / "none.yaml").string());
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("none.yaml"), std::string::npos) << missing.err;
 }
