@@ -11,7 +11,7 @@ namespace {
 const std::vector<OptionSpec>& checkDesignOptions() {
   static const std::vector<OptionSpec> specs{
       {"size", "PX", "glyph width in pixels (default: the design's size_px)"},
-      {"model", "MODEL.yaml", "perception model (default: config/perception_model.yaml)"},
+      perceptionModelOption(),
       {"help", "", "show this help"},
   };
   return specs;

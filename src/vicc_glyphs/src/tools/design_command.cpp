@@ -18,7 +18,7 @@ const std::vector<OptionSpec>& designOptions() {
       {"out", "OUT.png", "PNG to write (required)"},
       {"dci", "OUT.xml", "also write the modified curves as Orzan XML"},
       {"size", "PX", "output width in pixels (default: the design's size_px)"},
-      {"model", "MODEL.yaml", "perception model (default: config/perception_model.yaml)"},
+      perceptionModelOption(),
       {"help", "", "show this help"},
   };
   return specs;

@@ -32,7 +32,7 @@ const std::vector<OptionSpec>& mapOptions() {
       {"out", "MAP.png", "PNG to write (required)"},
       {"glyph-size", "PX", "glyph width in pixels, 16..1024 (default 96)"},
       {"width", "PX", "map width in pixels, 3 x glyph-size..8192 (default 900)"},
-      {"model", "MODEL.yaml", "perception model (default: config/perception_model.yaml)"},
+      perceptionModelOption(),
       {"help", "", "show this help"},
   };
   return specs;

@@ -15,7 +15,7 @@ using namespace vicc_glyphs::perception;
 const std::vector<OptionSpec>& levelsOptions() {
   static const std::vector<OptionSpec> specs{
       {"size-mm", "MM", "glyph width in mm (default: the model's reference size, 50)"},
-      {"model", "MODEL.yaml", "perception model file (default: config/perception_model.yaml)"},
+      perceptionModelOption(),
       {"waveform", "NAME", "sine (default), triangle, sawtooth or rectangle: calibrated stimuli"},
       {"help", "", "show this help"},
   };

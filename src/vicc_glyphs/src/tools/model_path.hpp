@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include "command_line.hpp"
+
 namespace vicc_glyphs::tools {
 
 /// The package's config/perception_model.yaml in share/vicc_glyphs of the devel or install
@@ -15,5 +17,10 @@ std::string findDefaultPerceptionModel(const std::string& option = "model");
 /// call it where errors are reported, after --help and the options are handled.
 std::string perceptionModelPathOrDefault(const std::string& given,
                                          const std::string& option = "model");
+
+/// The --model MODEL.yaml option of the subcommands that use the perception model.
+inline OptionSpec perceptionModelOption() {
+  return {"model", "MODEL.yaml", "perception model (default: config/perception_model.yaml)"};
+}
 
 }  // namespace vicc_glyphs::tools
