@@ -284,16 +284,14 @@ std::vector<Point2> BSplineCurve::flattenSpans(std::vector<double>& parameters,
     beziers[i] = {p0, p0 + h / 3.0 * evaluateOn(u0, span, 1),
                   p1 - h / 3.0 * evaluateOn(u1, span, 1), p1};
   }
-  const bool closed = isClosed();
+  std::vector<Point2> chain{beziers.front()[0]};  // the Bezier chain the curve becomes
+  for (const auto& b : beziers) chain.insert(chain.end(), b.begin() + 1, b.end());
+  const std::vector<char> beside_fold = segmentsBesideFolds(chain);
   std::vector<Point2> points;
   parameters.clear();
   for (std::size_t i = 0; i < pieces; ++i) {
     const Point2* b = beziers[i].data();
-    const bool after_fold =
-        (i > 0 || closed) && meetAtFold(beziers[i > 0 ? i - 1 : pieces - 1].data(), b);
-    const bool before_fold =
-        (i + 1 < pieces || closed) && meetAtFold(b, beziers[i + 1 < pieces ? i + 1 : 0].data());
-    const int steps = flatteningPieces(b, after_fold || before_fold, flattening);
+    const int steps = flatteningPieces(b, beside_fold[i], flattening);
     for (int k = 0; k < steps; ++k) {
       points.push_back(bezierPoint(b, static_cast<double>(k) / steps));
       parameters.push_back(breaks[i] + (breaks[i + 1] - breaks[i]) * k / steps);

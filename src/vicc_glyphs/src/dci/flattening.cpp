@@ -27,21 +27,23 @@ bool meetAtFold(const Point2* before, const Point2* after) {
   return lengths > 0.0 && incoming.dot(outgoing) < kFoldTurnCosine * lengths;
 }
 
-bool segmentBesideFold(const DiffusionCurve& curve, int k) {
-  const int segments = curve.segmentCount();
-  if (k < 0 || k >= segments) return false;
-  const auto& points = curve.control_points;
-  const bool closed = (points.front() - points.back()).norm() < 1e-9;
-  const Point2* own = &points[3 * k];
-  if (k > 0 || closed) {
+std::vector<char> segmentsBesideFolds(const std::vector<Point2>& chain) {
+  const int segments =
+      chain.size() < 4 || (chain.size() - 1) % 3 != 0 ? 0 : static_cast<int>(chain.size() - 1) / 3;
+  std::vector<char> beside(segments, 0);
+  if (segments == 0) return beside;
+  const bool closed = (chain.front() - chain.back()).norm() < 1e-9;
+  // Each join once: segment k - 1 meets segment k (and the last the first on a closed chain).
+  for (int k = closed ? 0 : 1; k < segments; ++k) {
     const int previous = k > 0 ? k - 1 : segments - 1;
-    if (meetAtFold(&points[3 * previous], own)) return true;
+    if (meetAtFold(&chain[3 * previous], &chain[3 * k])) beside[previous] = beside[k] = 1;
   }
-  if (k + 1 < segments || closed) {
-    const int next = k + 1 < segments ? k + 1 : 0;
-    if (meetAtFold(own, &points[3 * next])) return true;
-  }
-  return false;
+  return beside;
+}
+
+bool segmentBesideFold(const DiffusionCurve& curve, int k) {
+  const std::vector<char> beside = segmentsBesideFolds(curve.control_points);
+  return k >= 0 && k < static_cast<int>(beside.size()) && beside[k];
 }
 
 int flatteningPieces(const Point2* b, bool beside_fold, const Flattening& flattening) {
@@ -66,13 +68,14 @@ std::vector<Point2> flattenCurve(const DiffusionCurve& curve, std::vector<double
   std::vector<Point2> points;
   if (positions) positions->clear();
   const int segments = curve.segmentCount();
+  const std::vector<char> beside_fold = segmentsBesideFolds(curve.control_points);
   for (int k = 0; k < segments; ++k) {
     const Point2* b = &curve.control_points[3 * k];
     if (k == 0) {
       points.push_back(b[0]);
       if (positions) positions->push_back(0.0);
     }
-    const int pieces = flatteningPieces(b, segmentBesideFold(curve, k), flattening);
+    const int pieces = flatteningPieces(b, beside_fold[k], flattening);
     for (int p = 1; p <= pieces; ++p) {
       const double t = static_cast<double>(p) / pieces;
       points.push_back(p == pieces ? b[3] : bezierPoint(b, t));

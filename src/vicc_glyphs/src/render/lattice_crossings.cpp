@@ -147,6 +147,7 @@ void forEachLatticeCrossing(const DiffusionCurveImage& image, double scale, int 
     const DiffusionCurve& curve = image.curves[c];
     const int segments = curve.segmentCount();
     const CrossingCollector collector(static_cast<int>(c), width, height, visit);
+    const std::vector<char> beside_fold = segmentsBesideFolds(curve.control_points);
     for (int k = 0; k < segments; ++k) {
       Point2 b[4];
       for (int m = 0; m < 4; ++m) b[m] = scale * curve.control_points[3 * k + m];
@@ -155,7 +156,7 @@ void forEachLatticeCrossing(const DiffusionCurveImage& image, double scale, int 
       }
       if (outsideGrid(b, width, height)) continue;
       // As PACEMOD's polygon checks (flattening.hpp).
-      const int pieces = flatteningPieces(b, segmentBesideFold(curve, k));
+      const int pieces = flatteningPieces(b, beside_fold[k]);
       CurveSample previous{snapped(b[0]), static_cast<double>(k)};
       for (int p = 1; p <= pieces; ++p) {
         const double t = static_cast<double>(p) / pieces;

@@ -36,8 +36,11 @@ int flatteningPieces(const Point2* b, bool beside_fold, const Flattening& flatte
 /// ends meet at a fold: their tangents there more than 120 degrees apart.
 bool meetAtFold(const Point2* before, const Point2* after);
 
-/// Whether Bezier segment k of `curve` meets its predecessor or successor (across the closing
-/// point of a closed curve) at a fold.
+/// Per Bezier segment of `chain` (3K+1 points) whether it meets its predecessor or successor
+/// (across the closing point of a closed chain) at a fold: each join tested once.
+std::vector<char> segmentsBesideFolds(const std::vector<Point2>& chain);
+
+/// segmentsBesideFolds of `curve`'s control points, for segment k (false out of range).
 bool segmentBesideFold(const DiffusionCurve& curve, int k);
 
 /// The Bezier point of b[0] .. b[3] at t in [0, 1].
