@@ -31,7 +31,12 @@ bspline::BSplineCurve sparseFowlerBartels(
   Eigen::SparseMatrix<double> n(rows, curve.controlPointCount());
   n.setFromTriplets(entries.begin(), entries.end());
   const Eigen::SparseMatrix<double> gram = n * n.transpose();
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(gram);
+  // PACEMOD's constraints are the knot points in order along the curve plus a few (the seam,
+  // icon corners): the Gram matrix is banded but for those rows, and in the given order the
+  // factor fills one column per such row. AMD's ordering cost more than it saved (the brain
+  // with rectangle waves 12/10 mm, 1.2 mm: 33.2 -> 27.2 M instructions in this function).
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
+      solver(gram);
   const double scale = gram.diagonal().maxCoeff();
   if (solver.info() != Eigen::Success ||
       !(solver.vectorD().cwiseAbs().minCoeff() > 1e-12 * scale)) {

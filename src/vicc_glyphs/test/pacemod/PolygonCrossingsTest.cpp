@@ -109,6 +109,17 @@ TEST(PolygonCrossingsTest, TheCrossingPointIsWhereTheTwoSegmentsMeet) {
   EXPECT_NEAR(point.y(), 0.0, 1e-12);
 }
 
+// The search's boxes are floats: rounded to the nearest, the nearly vertical segment's box
+// (x from 2 - 1e-9 to 2 + 1e-9) would become x = 2 exactly and sit in the 2 px cells right of
+// x = 2 only, while the two segments cross at x = 2 - 9e-10, in the cell left of it.
+TEST(PolygonCrossingsTest, BoxesRoundedOutwardKeepACrossingNextToACellBorder) {
+  const std::vector<Polyline> lines{{{2.0 - 1e-9, -1.0}, {2.0 + 1e-9, 1.0}},
+                                    {{0.0, -0.9}, {3.0, -0.9}}};
+  const std::vector<Crossing> crossings = findCrossings(lines, 2.0);
+  ASSERT_EQ(crossings.size(), 1u);
+  EXPECT_LT(crossingPoint(lines, crossings.front()).x(), 2.0);
+}
+
 TEST(PolygonCrossingsTest, HugeExtentsCoarsenTheGrid) {
   const Polyline far{{0, 0}, {1e7, 1e7}, {1e7, 0}, {0, 1e7}, {0, 0}};
   const std::vector<Crossing> crossings = findCrossings({far}, 0.5);
