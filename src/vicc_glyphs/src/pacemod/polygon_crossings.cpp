@@ -34,14 +34,15 @@ bool adjacent(int segments, bool closed, int i, int j) {
 // The next float towards -infinity (+infinity with `up`) of a finite float: one step of its
 // bit pattern, inline (std::nextafter is a library call, four per box).
 float nextFloat(float value, bool up) {
-  if (value == 0.0f) return up ? std::numeric_limits<float>::denorm_min()
-                               : -std::numeric_limits<float>::denorm_min();
+  const float smallest = std::numeric_limits<float>::denorm_min();
+  if (value == 0.0f) return up ? smallest : -smallest;
   std::uint32_t bits;
   std::memcpy(&bits, &value, sizeof bits);
   bits = (value > 0.0f) == up ? bits + 1 : bits - 1;
   std::memcpy(&value, &bits, sizeof bits);
   return value;
 }
+
 // `value` rounded to a float towards -infinity (below) or +infinity (above).
 float below(double value) {
   const float rounded = static_cast<float>(value);

@@ -2,10 +2,10 @@
 // Heap settings for processes that make glyph after glyph (the glyph server node, the
 // vicc_glyph tool, the benchmarks). With glibc's defaults, large blocks (hundreds of kilobytes
 // and more: a glyph's sampled contours, the crossing search's buckets, the renderer's fields)
-// are handed back to the kernel when freed, and the next glyph's blocks of the same size come as fresh pages: one page
-// fault per 4 KiB. For the brain's rectangle-wave glyphs that was a fifth of their CPU time
-// before the crossing search kept its buckets (src/vicc_glyphs/bench/pacemod/README.md,
-// session 31).
+// are handed back to the kernel when freed, and the next glyph's blocks of the same size come as
+// fresh pages: one page fault per 4 KiB. For the brain's rectangle-wave glyphs that was a fifth of
+// their CPU time before the crossing search kept its buckets
+// (src/vicc_glyphs/bench/pacemod/README.md, session 31).
 
 namespace vicc_glyphs {
 
