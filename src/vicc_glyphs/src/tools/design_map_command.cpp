@@ -24,6 +24,7 @@ constexpr int kMaxMapSide = 8192;  // the --width limit; also the map height's
 constexpr int kLabelRoom = 20;     // below the bottom glyphs' labels
 // Glyph centres closer than this many glyph widths overlay into an unreadable mix.
 constexpr double kOverlapFraction = 0.5;
+constexpr int kWhiteBelow = 250;  // a glyph pixel with a channel below this is drawn
 constexpr size_t kMaxOverlapWarnings = 10;
 
 const std::vector<OptionSpec>& mapOptions() {
@@ -92,6 +93,18 @@ double cellNumber(const std::string& text, const std::string& where, const std::
   return value;
 }
 
+// The map's font (OpenCV's Hershey) has printable ASCII only: any other byte would be drawn as
+// '?', so "Thüringen" came out as "Th??ringen".
+void requireDrawableLabel(const std::string& label, const std::string& where) {
+  for (const char c : label) {
+    if (c < ' ' || c > '~') {
+      throw std::runtime_error(where + ", column label: '" + label +
+                               "' has a character the map's font cannot draw (printable ASCII "
+                               "only; write e.g. 'ue' for 'ü')");
+    }
+  }
+}
+
 std::string variableNames(const design::GlyphDesign& glyph) {
   std::string names;
   for (const design::DesignVariable& v : glyph.variables)
@@ -146,6 +159,7 @@ std::vector<MapRow> readTable(const std::string& path, const design::GlyphDesign
       throw std::runtime_error(where + " has " + std::to_string(cells.size()) +
                                " cells, the header " + std::to_string(header.size()));
     }
+    requireDrawableLabel(cells[0], where);
     MapRow row{number,
                cells[0],
                cellNumber(cells[1], where, "lon", -180.0, 180.0),
@@ -223,15 +237,42 @@ void warnAboutOverlaps(const std::vector<MapRow>& rows, const std::vector<cv::Po
   }
 }
 
+// The rows of a BGR glyph image down to its lowest pixel with a channel below kWhiteBelow.
+int drawnRows(const cv::Mat& glyph) {
+  for (int y = glyph.rows - 1; y >= 0; --y) {
+    const cv::Vec3b* row = glyph.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < glyph.cols; ++x) {
+      if (row[x][0] < kWhiteBelow || row[x][1] < kWhiteBelow || row[x][2] < kWhiteBelow) {
+        return y + 1;
+      }
+    }
+  }
+  return 0;
+}
+
 // Darken-blend (per-channel minimum): the glyphs' white backgrounds do not cover neighbours.
-void stamp(cv::Mat& map, const cv::Mat& glyph, cv::Point centre, const std::string& label) {
+// Returns the map row just below the glyph's lowest drawn (not white) pixel.
+int stamp(cv::Mat& map, const cv::Mat& glyph, cv::Point centre) {
   const cv::Rect target(centre.x - glyph.cols / 2, centre.y - glyph.rows / 2, glyph.cols,
                         glyph.rows);
   const cv::Rect clipped = target & cv::Rect(0, 0, map.cols, map.rows);
   cv::Mat region = map(clipped);
   cv::min(region, glyph(clipped - target.tl()), region);
-  cv::putText(map, label, {centre.x - 10, std::min(map.rows - 4, target.br().y + 4)},
-              cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
+  return target.y + drawnRows(glyph);
+}
+
+// The label centred just below its glyph's drawn part (`below`), drawn after all glyphs and on
+// a white halo: a neighbouring glyph stamped later covered a label's letters (Saarland's spikes
+// over "RP" in the German states map) and left them on its colours.
+void label(cv::Mat& map, cv::Point centre, int below, const std::string& text) {
+  constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
+  constexpr double kScale = 0.45;
+  int baseline = 0;
+  const cv::Size size = cv::getTextSize(text, kFont, kScale, 1, &baseline);
+  const cv::Point origin(centre.x - size.width / 2,
+                         std::min(map.rows - baseline, below + 3 + size.height));
+  cv::putText(map, text, origin, kFont, kScale, cv::Scalar(255, 255, 255), 3, cv::LINE_AA);
+  cv::putText(map, text, origin, kFont, kScale, cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
 }
 
 }  // namespace
@@ -282,13 +323,17 @@ int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out,
     RenderOptions options;
     options.background = glyph.background;
     const DiffusionCurveImage icon = design::loadIcon(glyph, glyph_size);  // once for the map
+    std::vector<int> bottoms;  // per row, the map row below its glyph
     for (size_t i = 0; i < rows.size(); ++i) {
       RenderResult result;
       renderer.render(design::buildGlyph(glyph, rows[i].levels, model, icon), options, result);
       requireSomethingDrawn(result.report, "row " + rows[i].label);
       cv::Mat bgr;
       cv::cvtColor(toRgb8(result.image), bgr, cv::COLOR_RGB2BGR);
-      stamp(map, bgr, layout.centres[i], rows[i].label);
+      bottoms.push_back(stamp(map, bgr, layout.centres[i]));
+    }
+    for (size_t i = 0; i < rows.size(); ++i) {
+      label(map, layout.centres[i], bottoms[i], rows[i].label);
     }
     writePng8(map, ChannelOrder::kBgr, output);
     out << "wrote " << output << " (" << rows.size()

@@ -1,6 +1,7 @@
 // "vicc_glyph design" (contract command line) run like a user.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <opencv2/imgcodecs.hpp>
@@ -155,6 +156,57 @@ TEST_F(DesignCliTest, MapIsNorthUpAndItsHeightIsBounded) {
   // One longitude for all rows (a zero span) tried to allocate 1.9 TB.
   ASSERT_EQ(map("South,10,50,95,1\nNorth,10,52,40,20\n").exit_code, 0);
   EXPECT_EQ(cv::imread(mapPng().string()).rows, 8192);
+}
+
+// A label is drawn after all glyphs, on a white halo: glyph BB, just south of AA, covers AA's
+// label, and AA's letters must look as on white paper. (Drawn with each glyph, the label lay
+// under the next glyph's cloud.) The letters are where the map with label AA differs from the
+// same map with an empty label; CC fixes the extent, so the three maps share one layout.
+TEST_F(DesignCliTest, MapLabelsStayReadableOverANeighbouringGlyph) {
+  const std::string options = "--glyph-size 128 --width 500";
+  const auto draw = [&](const std::string& rows) {
+    EXPECT_EQ(map(rows, options).exit_code, 0);
+    return cv::imread(mapPng().string());
+  };
+  const cv::Mat unlabelled = draw(",8,52,95,20\nCC,12,50,40,1\n");
+  const cv::Mat alone = draw("AA,8,52,95,20\nCC,12,50,40,1\n");
+  const cv::Mat covered = draw("AA,8,52,95,20\nBB,8.1,51,95,20\nCC,12,50,40,1\n");
+  ASSERT_EQ(alone.size(), covered.size());
+  ASSERT_EQ(alone.size(), unlabelled.size());
+  const auto difference = [](const cv::Vec3b& a, const cv::Vec3b& b) {
+    return std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]);
+  };
+  int letters = 0, as_on_paper = 0;
+  cv::Rect letter_box;
+  for (int y = 0; y < alone.rows; ++y) {
+    for (int x = 0; x < alone.cols; ++x) {
+      if (difference(alone.at<cv::Vec3b>(y, x), unlabelled.at<cv::Vec3b>(y, x)) == 0) continue;
+      ++letters;
+      letter_box |= cv::Rect(x, y, 1, 1);
+      as_on_paper += difference(alone.at<cv::Vec3b>(y, x), covered.at<cv::Vec3b>(y, x)) <= 30;
+    }
+  }
+  ASSERT_GT(letters, 20);
+  EXPECT_GT(as_on_paper, 0.95 * letters) << as_on_paper << " of " << letters;
+  // Beside the letters: white paper in the map without BB, BB's grey-blue cloud (110-140 per
+  // channel) in the other.
+  const cv::Rect left_of(letter_box.x - 10, letter_box.y, 5, letter_box.height);
+  const cv::Rect right_of(letter_box.br().x + 5, letter_box.y, 5, letter_box.height);
+  for (const cv::Rect& beside : {left_of, right_of}) {
+    EXPECT_EQ(darkestIn(alone, beside), 3 * 255);
+    EXPECT_LT(darkestIn(covered, beside), 450);
+  }
+}
+
+TEST_F(DesignCliTest, MapRefusesALabelItsFontCannotDraw) {
+  const auto umlaut = map("Th\u00fcringen,11,51,95,1\n");
+  EXPECT_EQ(umlaut.exit_code, 1);
+  EXPECT_NE(umlaut.err.find("line 2, column label: 'Th\u00fcringen' has a character the map's "
+                            "font cannot draw"),
+            std::string::npos)
+      << umlaut.err;
+  EXPECT_FALSE(std::filesystem::exists(mapPng()));
+  EXPECT_EQ(map("Thueringen,11,51,95,1\n").exit_code, 0);
 }
 
 TEST_F(DesignCliTest, MapCentresRowsAtOnePlace) {
