@@ -13,10 +13,12 @@ add_library(vicc_glyphs_design
   src/design/gradient_channels.cpp
   src/design/design_builder.cpp
   src/design/design_check.cpp
+  src/design/background_check.cpp
 )
 target_compile_options(vicc_glyphs_design PRIVATE ${VICC_WARNINGS})
+find_package(Threads REQUIRED)
 target_link_libraries(vicc_glyphs_design vicc_glyphs_pacemod vicc_glyphs_perception
-  vicc_glyphs_formats yaml-cpp)
+  vicc_glyphs_formats yaml-cpp Threads::Threads)
 
 install(TARGETS vicc_glyphs_design
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
@@ -45,7 +47,8 @@ if(CATKIN_ENABLE_TESTING)
   catkin_add_gtest(vicc_glyphs_design_test
     test/design/GlyphDesignTest.cpp
     test/design/DesignBuildTest.cpp
-    test/design/IcpColourTest.cpp)
+    test/design/IcpColourTest.cpp
+    test/design/BackgroundCheckTest.cpp)
   target_compile_options(vicc_glyphs_design_test PRIVATE ${VICC_WARNINGS})
   target_compile_definitions(vicc_glyphs_design_test PRIVATE
     VICC_GLYPHS_CONFIG_DIR="${CMAKE_CURRENT_SOURCE_DIR}/config"

@@ -100,6 +100,37 @@ GlyphServer::GlyphServer(ros::NodeHandle nh, ros::NodeHandle private_nh)
       "glyph_server: %zu designs from %s (icons imported and one glyph each rendered in "
       "%.0f ms)",
       designs_.size(), parameters_.designs_dir.c_str(), start_up_ms);
+  if (parameters_.check_designs) startDesignCheck();
+}
+
+void GlyphServer::startDesignCheck() {
+  design::BackgroundDesignCheck::Designs designs;
+  for (const auto& [name, entry] : designs_) designs.emplace_back(name, &entry.design);
+  design_check_ = std::make_unique<design::BackgroundDesignCheck>(
+      std::move(designs), model_,
+      [this](const design::BackgroundDesignCheck::Outcome& outcome) { logDesignCheck(outcome); });
+}
+
+// On the check's thread: reads only the designs and the parameters, which no request changes.
+void GlyphServer::logDesignCheck(const design::BackgroundDesignCheck::Outcome& outcome) const {
+  const char* name = outcome.name.c_str();
+  if (!outcome.error.empty()) {
+    ROS_WARN("glyph_server: design '%s' could not be checked: %s", name, outcome.error.c_str());
+    return;
+  }
+  const design::DesignCheck& check = outcome.check;
+  if (check.problems.empty()) {
+    ROS_INFO("glyph_server: design '%s': all %d level combinations build at %d px (%.1f s)", name,
+             check.combinations, check.size_px, outcome.seconds);
+    return;
+  }
+  const design::LevelProblem& first = check.problems.front();
+  ROS_WARN(
+      "glyph_server: design '%s': %zu of %d level combinations fail at %d px, the first: %s: %s. "
+      "`vicc_glyph check-design %s/%s.yaml --size %d` lists them all",
+      name, check.problems.size(), check.combinations, check.size_px,
+      design::describeLevels(designs_.at(outcome.name).design, first.levels).c_str(),
+      first.problem.c_str(), parameters_.designs_dir.c_str(), name, check.size_px);
 }
 
 // Each icon imported now at the design's size, and one glyph per design built and rendered

@@ -128,6 +128,10 @@ TEST(GlyphServerParameters, BadParametersAreNamed) {
             std::string::npos);
   EXPECT_NE(message("designs_dir", std::string("/nonexistent")).find("~designs_dir"),
             std::string::npos);
+  EXPECT_NE(message("check_designs", std::string("yes"))
+                .find("/bad_check_designs/check_designs has the wrong type: expected true or "
+                      "false, got 'yes'"),
+            std::string::npos);
   EXPECT_NE(
       message("designs_dir", 3)
           .find("/bad_designs_dir/designs_dir has the wrong type: expected a string, got '3'"),
@@ -248,6 +252,7 @@ TEST(GlyphServerParameters, KeysLeftOutTakeThePackagesFilesAndTyposAreNamed) {
   const auto parameters = vicc_glyphs::ros_glyph::readGlyphServerParameters(nh, read_names);
   const auto defaults = vicc_glyphs::ros_glyph::GlyphServerParameters::withDefaultPaths();
   EXPECT_EQ(parameters.cache_size, 64);
+  EXPECT_TRUE(parameters.check_designs);
   EXPECT_EQ(parameters.designs_dir, defaults.designs_dir);
   EXPECT_FALSE(parameters.designs_dir.empty());
   EXPECT_EQ(vicc_common::unknownRosParameters(nh, read_names),

@@ -1,8 +1,9 @@
 #pragma once
 // Every level combination of a design, built: a design file can load and still fail for some
 // data (a level whose waves carry the glyph out of its frame, a modification no curve takes, a
-// curve that crosses itself where the renderer draws it). The glyph server would find that only
-// when such data arrive; `vicc_glyph check-design` finds it before.
+// curve that crosses itself where the renderer draws it). The glyph server runs this check
+// after start-up on a thread of its own (background_check.hpp); `vicc_glyph check-design` runs
+// it offline.
 
 #include <functional>
 #include <string>

@@ -13,6 +13,10 @@
 //   ~perception_model (string): model file (default: the package's config/perception_model.yaml)
 //   ~cache_size (int, 1..10000, default 64): rendered glyphs kept, keyed by design, data
 //   levels and size (values in the same bins share an entry)
+//   ~check_designs (bool, default true): after start-up, a thread of lower priority builds
+//   every level combination of every design at the design's size (as `vicc_glyph
+//   check-design` does) and logs, per design, that all build or how many fail and the first of
+//   them (a warning), while requests are served
 
 #include <image_transport/image_transport.h>
 #include <ros/ros.h>
@@ -29,6 +33,7 @@
 #include <vector>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
+#include "vicc_glyphs/design/background_check.hpp"
 #include "vicc_glyphs/design/glyph_design.hpp"
 #include "vicc_glyphs/perception/perception_model.hpp"
 #include "vicc_glyphs/render/renderer.hpp"
@@ -39,6 +44,7 @@ struct GlyphServerParameters {
   std::string designs_dir;
   std::string perception_model;
   int cache_size = 64;
+  bool check_designs = true;
 
   /// The defaults, with the package's designs/ and config/perception_model.yaml.
   static GlyphServerParameters withDefaultPaths();
@@ -52,6 +58,7 @@ visitParameters(Config& config, Visitor& visit) {
   visit("designs_dir", config.designs_dir);
   visit("perception_model", config.perception_model);
   visit("cache_size", config.cache_size);
+  visit("check_designs", config.check_designs);
 }
 
 /// Reads the parameters under `private_nh` over withDefaultPaths(); throws
@@ -88,6 +95,9 @@ class GlyphServer {
   const DiffusionCurveImage& icon(DesignEntry& entry, int size);
   void onSubscribe(const std::string& design,
                    const image_transport::SingleSubscriberPublisher& pub);
+  /// Starts the background check of every level combination (~check_designs).
+  void startDesignCheck();
+  void logDesignCheck(const design::BackgroundDesignCheck::Outcome& outcome) const;
 
   ros::NodeHandle private_nh_;
   std::set<std::string> parameter_names_;  ///< the resolved names the table read
@@ -103,6 +113,8 @@ class GlyphServer {
   std::size_t cache_bytes_ = 0;      ///< pixels of the cached glyphs
   std::list<CacheKey> cache_order_;  // oldest first
   std::mutex mutex_;
+  /// Last, so that it stops before the designs and the model it reads go.
+  std::unique_ptr<design::BackgroundDesignCheck> design_check_;
 };
 
 }  // namespace vicc_glyphs::ros_glyph
