@@ -60,7 +60,12 @@ void BackgroundDesignCheck::run(const Designs& designs, const perception::Percep
     }
     outcome.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    report(outcome);
+    try {
+      report(outcome);
+    } catch (const std::exception&) {
+      // Escaping this thread, it would end the server that answers requests; the report is
+      // only the log of a check.
+    }
   }
 }
 
