@@ -31,12 +31,7 @@ int runCheckDesignCommand(const std::vector<std::string>& args, std::ostream& ou
                           std::ostream& err) {
   std::string design_path, model_path;
   int size = 0;
-  try {
-    const ParsedArguments parsed = parseArguments(args, checkDesignOptions());
-    if (parsed.has("help")) {
-      printUsage(out);
-      return 0;
-    }
+  const auto read = [&](const ParsedArguments& parsed) {
     if (parsed.positional.size() != 1) throw UsageError("expected one DESIGN.yaml");
     design_path = parsed.positional.front();
     if (parsed.has("size")) {
@@ -44,11 +39,10 @@ int runCheckDesignCommand(const std::vector<std::string>& args, std::ostream& ou
                           design::kMaxGlyphPixels);
     }
     if (parsed.has("model")) model_path = parsed.value("model");
-  } catch (const UsageError& e) {
-    err << "vicc_glyph check-design: " << e.what() << "\n\n";
-    printUsage(err);
-    return 2;
-  }
+  };
+  const std::optional<int> done =
+      readCommandLine("check-design", args, checkDesignOptions(), printUsage, out, err, read);
+  if (done) return *done;
   try {
     const perception::PerceptionModel model =
         perception::loadPerceptionModel(perceptionModelPathOrDefault(model_path));

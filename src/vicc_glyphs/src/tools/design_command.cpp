@@ -36,12 +36,7 @@ void printUsage(std::ostream& out) {
 int runDesignCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   std::string design_path, values, output, dci, model_path;  // model: empty for the default
   int size = 0;
-  try {
-    const ParsedArguments parsed = parseArguments(args, designOptions());
-    if (parsed.has("help")) {
-      printUsage(out);
-      return 0;
-    }
+  const auto read = [&](const ParsedArguments& parsed) {
     if (parsed.positional.size() != 1) throw UsageError("expected one DESIGN.yaml");
     design_path = parsed.positional.front();
     values = parsed.value("values");
@@ -55,11 +50,10 @@ int runDesignCommand(const std::vector<std::string>& args, std::ostream& out, st
     dci = parsed.value("dci");
     requireDistinctFiles(
         {{"DESIGN", design_path}, {"--model", model_path}, {"--out", output}, {"--dci", dci}});
-  } catch (const UsageError& e) {
-    err << "vicc_glyph design: " << e.what() << "\n\n";
-    printUsage(err);
-    return 2;
-  }
+  };
+  const std::optional<int> done =
+      readCommandLine("design", args, designOptions(), printUsage, out, err, read);
+  if (done) return *done;
   try {
     const perception::PerceptionModel model =
         perception::loadPerceptionModel(perceptionModelPathOrDefault(model_path));

@@ -281,12 +281,7 @@ int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out,
                         std::ostream& err) {
   std::string design_path, table, output, model_path;  // model_path: empty for the default
   int glyph_size = 96, width = 900;
-  try {
-    const ParsedArguments parsed = parseArguments(args, mapOptions());
-    if (parsed.has("help")) {
-      printUsage(out);
-      return 0;
-    }
+  const auto read = [&](const ParsedArguments& parsed) {
     if (parsed.positional.size() != 1) throw UsageError("expected one DESIGN.yaml");
     design_path = parsed.positional.front();
     table = parsed.value("table");
@@ -306,11 +301,10 @@ int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out,
     if (parsed.has("model")) model_path = parsed.value("model");
     requireDistinctFiles(
         {{"DESIGN", design_path}, {"--table", table}, {"--model", model_path}, {"--out", output}});
-  } catch (const UsageError& e) {
-    err << "vicc_glyph design-map: " << e.what() << "\n\n";
-    printUsage(err);
-    return 2;
-  }
+  };
+  const std::optional<int> done =
+      readCommandLine("design-map", args, mapOptions(), printUsage, out, err, read);
+  if (done) return *done;
   try {
     const perception::PerceptionModel model =
         perception::loadPerceptionModel(perceptionModelPathOrDefault(model_path));

@@ -70,12 +70,7 @@ std::string fileHeader(const std::string& survey, const ModelFit& fit, const Fit
 int runFitCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   std::string survey, output, base;  // base: empty for the default model, found below
   FitOptions options;
-  try {
-    const ParsedArguments parsed = parseArguments(args, fitOptions());
-    if (parsed.has("help")) {
-      printUsage(out);
-      return 0;
-    }
+  const auto read = [&](const ParsedArguments& parsed) {
     if (parsed.positional.size() != 1) throw UsageError("expected one SURVEY.csv file");
     survey = parsed.positional.front();
     output = parsed.value("out");
@@ -84,11 +79,10 @@ int runFitCommand(const std::vector<std::string>& args, std::ostream& out, std::
     if (parsed.has("p1")) options.outliers.p1 = parseNumber("p1", parsed.value("p1"), 1e-6, 1.0);
     if (parsed.has("p2")) options.outliers.p2 = parseNumber("p2", parsed.value("p2"), 1e-6, 1.0);
     requireDistinctFiles({{"SURVEY", survey}, {"--base", base}, {"--out", output}});
-  } catch (const UsageError& e) {
-    err << "vicc_glyph fit-model: " << e.what() << "\n\n";
-    printUsage(err);
-    return 2;
-  }
+  };
+  const std::optional<int> done =
+      readCommandLine("fit-model", args, fitOptions(), printUsage, out, err, read);
+  if (done) return *done;
   try {
     const std::vector<SurveyAnswer> answers = loadSurveyCsv(survey);
     // Without answers the "fitted" model would be the base model, written as if fitted.

@@ -58,12 +58,7 @@ int runLevelsCommand(const std::vector<std::string>& args, std::ostream& out, st
   std::string model_path;  // empty: the default model, found below
   double size_mm = 0.0;
   Waveform waveform = Waveform::Sine;
-  try {
-    const ParsedArguments parsed = parseArguments(args, levelsOptions());
-    if (parsed.has("help")) {
-      printUsage(out);
-      return 0;
-    }
+  const auto read = [&](const ParsedArguments& parsed) {
     if (!parsed.positional.empty())
       throw UsageError("unexpected argument '" + parsed.positional[0] + "'");
     if (parsed.has("size-mm")) size_mm = parseNumber("size-mm", parsed.value("size-mm"), 1e-3, 1e4);
@@ -73,11 +68,10 @@ int runLevelsCommand(const std::vector<std::string>& args, std::ostream& out, st
       if (!named) throw UsageError("unknown --waveform '" + parsed.value("waveform") + "'");
       waveform = *named;
     }
-  } catch (const UsageError& e) {
-    err << "vicc_glyph levels: " << e.what() << "\n\n";
-    printUsage(err);
-    return 2;
-  }
+  };
+  const std::optional<int> done =
+      readCommandLine("levels", args, levelsOptions(), printUsage, out, err, read);
+  if (done) return *done;
   try {
     const PerceptionModel model = loadPerceptionModel(perceptionModelPathOrDefault(model_path));
     if (size_mm == 0.0) size_mm = model.reference_size_mm;

@@ -100,12 +100,7 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
   svg.warn = [&err](const std::string& warning) {
     err << "vicc_glyph render: warning: " << warning << "\n";
   };
-  try {
-    const ParsedArguments parsed = parseArguments(args, renderOptions());
-    if (parsed.has("help")) {
-      printUsage(out);
-      return 0;
-    }
+  const auto read = [&](const ParsedArguments& parsed) {
     if (parsed.positional.size() != 1) {
       throw UsageError(parsed.positional.empty() ? "missing INPUT file"
                                                  : "expected one INPUT file, got " +
@@ -139,11 +134,10 @@ int runRenderCommand(const std::vector<std::string>& args, std::ostream& out, st
     dci = parsed.value("dci");
     report = parsed.has("report");
     requireDistinctFiles({{"INPUT", input}, {"--out", output}, {"--dci", dci}});
-  } catch (const UsageError& e) {
-    err << "vicc_glyph render: " << e.what() << "\n\n";
-    printUsage(err);
-    return 2;
-  }
+  };
+  const std::optional<int> done =
+      readCommandLine("render", args, renderOptions(), printUsage, out, err, read);
+  if (done) return *done;
   options.multigrid.record_residuals = report;
 
   try {
