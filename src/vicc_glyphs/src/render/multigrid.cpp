@@ -860,43 +860,96 @@ class Multigrid {
 
   // Lexicographic Gauss-Seidel on a coarse level, forwards or (the adjoint) backwards. Points
   // that are not unknowns have zero rows and stay 0. From zero, the first (forward) sweep
-  // reads only the neighbours it has already relaxed.
+  // reads only the neighbours it has already relaxed. Each update is written as the part from
+  // every neighbour but the one relaxed just before, less that one's coupling over the centre
+  // times its new value (carried in a register): the chain from point to point is then one
+  // multiply and one subtract, and the rest of a point's work overlaps the previous point's
+  // (summed in the stencil's order, the chain was six operations long and bound the sweep).
   static void smoothCoarse(const CoarseLevel& level, Px* __restrict u, const Px* __restrict f,
                            int sweeps, bool backwards, bool from_zero) {
-    const std::uint8_t* __restrict regular = level.regular.data();
-    const float* __restrict inverse = level.inverse_centre.data();
-    const Stencil& stencil = level.regular_stencil;
-    const float edge = stencil[kE], corner = stencil[kSE], inverse_regular = 1.0f / stencil[kC];
-    const int s = level.stride;
-    const auto relax = [&](int p) {
-      if (regular[p]) {
-        u[p] = (f[p] - regularOffDiagonal(u, p, s, edge, corner)) * inverse_regular;
-      } else {
-        u[p] = (f[p] - offDiagonal(level, u, p)) * inverse[p];
-      }
-    };
     for (int sweep = 0; sweep < sweeps; ++sweep) {
-      if (from_zero && sweep == 0) {
-        for (int y = 0; y < level.height; ++y) {
-          for (int p = level.index(0, y), end = level.index(level.width, y); p < end; ++p) {
-            u[p] = (f[p] - backwardOffDiagonal(level, u, p)) * inverse[p];
-          }
-        }
-        continue;
-      }
+      const bool first_from_zero = from_zero && sweep == 0;  // always forwards
       for (int row = 0; row < level.height; ++row) {
-        const int y = backwards ? level.height - 1 - row : row;
-        if (backwards) {
-          for (int p = level.index(level.width - 1, y), end = level.index(0, y); p >= end; --p) {
-            relax(p);
-          }
+        const int y = backwards && !first_from_zero ? level.height - 1 - row : row;
+        if (first_from_zero) {
+          relaxRowFromZero(level, u, f, y);
+        } else if (backwards) {
+          relaxRowBackwards(level, u, f, y);
         } else {
-          for (int p = level.index(0, y), end = level.index(level.width, y); p < end; ++p) {
-            relax(p);
-          }
+          relaxRowForwards(level, u, f, y);
         }
       }
     }
+  }
+
+  static void relaxRowForwards(const CoarseLevel& level, Px* __restrict u, const Px* __restrict f,
+                               int y) {
+    const std::uint8_t* __restrict regular = level.regular.data();
+    const float* __restrict inverse = level.inverse_centre.data();
+    const float* __restrict east = level.east.data();
+    const RegularRow stencil(level.regular_stencil);
+    const int s = level.stride;
+    Px west = u[level.index(-1, y)];  // the ghost border: 0
+    for (int p = level.index(0, y), end = level.index(level.width, y); p < end; ++p) {
+      if (regular[p]) {
+        const Px others = stencil.edge * ((u[p - s] + u[p + s]) + u[p + 1]) +
+                          stencil.corner * regularCorners(u, p, s);
+        west = (f[p] - others) * stencil.inverse_centre - stencil.edge_over_centre * west;
+      } else {
+        const Px others = backwardOffDiagonalButWest(level, u, p) + forwardOffDiagonal(level, u, p);
+        west = (f[p] - others) * inverse[p] - (east[p - 1] * inverse[p]) * west;
+      }
+      u[p] = west;
+    }
+  }
+
+  static void relaxRowBackwards(const CoarseLevel& level, Px* __restrict u,
+                                const Px* __restrict f, int y) {
+    const std::uint8_t* __restrict regular = level.regular.data();
+    const float* __restrict inverse = level.inverse_centre.data();
+    const float* __restrict east = level.east.data();
+    const RegularRow stencil(level.regular_stencil);
+    const int s = level.stride;
+    Px east_value = u[level.index(level.width, y)];  // the ghost border: 0
+    for (int p = level.index(level.width - 1, y), end = level.index(0, y); p >= end; --p) {
+      if (regular[p]) {
+        const Px others = stencil.edge * ((u[p - s] + u[p + s]) + u[p - 1]) +
+                          stencil.corner * regularCorners(u, p, s);
+        east_value =
+            (f[p] - others) * stencil.inverse_centre - stencil.edge_over_centre * east_value;
+      } else {
+        const Px others = backwardOffDiagonal(level, u, p) + forwardOffDiagonalButEast(level, u, p);
+        east_value = (f[p] - others) * inverse[p] - (east[p] * inverse[p]) * east_value;
+      }
+      u[p] = east_value;
+    }
+  }
+
+  // The first forward sweep from zero: only the neighbours before p have values.
+  static void relaxRowFromZero(const CoarseLevel& level, Px* __restrict u, const Px* __restrict f,
+                               int y) {
+    const float* __restrict inverse = level.inverse_centre.data();
+    const float* __restrict east = level.east.data();
+    Px west{};
+    for (int p = level.index(0, y), end = level.index(level.width, y); p < end; ++p) {
+      const Px others = backwardOffDiagonalButWest(level, u, p);
+      west = (f[p] - others) * inverse[p] - (east[p - 1] * inverse[p]) * west;
+      u[p] = west;
+    }
+  }
+
+  // The regular stencil's couplings as the smoother uses them.
+  struct RegularRow {
+    explicit RegularRow(const Stencil& stencil)
+        : edge(stencil[kE]),
+          corner(stencil[kSE]),
+          inverse_centre(1.0f / stencil[kC]),
+          edge_over_centre(stencil[kE] / stencil[kC]) {}
+    float edge, corner, inverse_centre, edge_over_centre;
+  };
+
+  __attribute__((always_inline)) static Px regularCorners(const Px* __restrict u, int p, int s) {
+    return (u[p - s - 1] + u[p - s + 1]) + (u[p + s - 1] + u[p + s + 1]);
   }
 
   // The off-diagonal part of a regular coarse row times u (the couplings as arguments, so that
@@ -923,6 +976,30 @@ class Multigrid {
     const int s = level.stride;
     return level.east[p - 1] * u[p - 1] + level.south[p - s] * u[p - s] +
            level.south_east[p - s - 1] * u[p - s - 1] + level.south_west[p - s + 1] * u[p - s + 1];
+  }
+
+  // backwardOffDiagonal without the west neighbour (north-west, north, north-east).
+  __attribute__((always_inline)) static Px backwardOffDiagonalButWest(const CoarseLevel& level,
+                                                                      const Px* __restrict u,
+                                                                      int p) {
+    const int s = level.stride;
+    return level.south[p - s] * u[p - s] + level.south_east[p - s - 1] * u[p - s - 1] +
+           level.south_west[p - s + 1] * u[p - s + 1];
+  }
+
+  // The part towards the neighbours after p (east, south-west, south, south-east).
+  __attribute__((always_inline)) static Px forwardOffDiagonal(const CoarseLevel& level,
+                                                              const Px* __restrict u, int p) {
+    return level.east[p] * u[p + 1] + forwardOffDiagonalButEast(level, u, p);
+  }
+
+  // forwardOffDiagonal without the east neighbour.
+  __attribute__((always_inline)) static Px forwardOffDiagonalButEast(const CoarseLevel& level,
+                                                                     const Px* __restrict u,
+                                                                     int p) {
+    const int s = level.stride;
+    return level.south[p] * u[p + s] + level.south_east[p] * u[p + s + 1] +
+           level.south_west[p] * u[p + s - 1];
   }
 
   // The residual f - A u at pixel p of the finest level; without f, u holds the Dirichlet
