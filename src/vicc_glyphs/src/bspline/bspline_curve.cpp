@@ -248,8 +248,8 @@ std::vector<Point2> BSplineCurve::sampleSpans(int per_span, std::vector<double>&
   if (per_span < 1) fail("sampling needs at least 1 point per knot span");
   const std::vector<double> breaks = breakpoints();
   std::vector<Point2> points;
-  // Reserved: grown step by step, a high-frequency wave's polygon (hundreds of thousands of
-  // points) would touch fresh memory several times over.
+  // Reserved: grown step by step, a high-frequency wave's polygon (tens of thousands of points)
+  // would touch fresh memory several times over.
   points.reserve((breaks.size() - 1) * per_span + 1);
   parameters.clear();
   parameters.reserve(points.capacity());

@@ -56,7 +56,7 @@ float above(double value) {
 // A float box that contains the segment's double box: it only preselects pairs (the crossing
 // test reads the double points; a box rounded to the nearest float could leave a cell that the
 // crossing point lies in), and half the bytes of a double box keep the buckets of a
-// high-frequency wave (hundreds of thousands of boxes) in the cache: `vicc_glyph modify` of the
+// high-frequency wave (tens of thousands of boxes) in the cache: `vicc_glyph modify` of the
 // brain with rectangle waves 12/10 mm, 1.2 mm, spent a third less time in the search.
 struct SegmentBox {
   // Without initialisers, so that resizing the buckets does not zero them first (they are
@@ -83,7 +83,7 @@ struct CellRange {
 // holds bucketed[start[c]] ... bucketed[start[c + 1] - 1], the boxes in increasing lo.x, so
 // that a sweep along x meets only the pairs whose x ranges overlap). Each finite segment's box
 // and cell range are made once; the arrays are the caller's, kept between searches, since a
-// high-frequency wave has hundreds of thousands of segments and fresh memory costs page faults.
+// high-frequency wave has tens of thousands of segments and fresh memory costs page faults.
 struct SegmentGrid {
   static constexpr double kMaxCells = 1 << 22;
   std::vector<SegmentBox>& bucketed;

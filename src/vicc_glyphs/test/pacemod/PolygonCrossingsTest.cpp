@@ -68,6 +68,37 @@ TEST(PolygonCrossingsTest, FindsExactlyTheCrossingsOfTheExhaustiveCheckOnce) {
   }
 }
 
+// Finely sampled curves with loops (trochoids: a point on a wheel rolling around a circle), as
+// the flattened waves are: several segments per grid cell, crossings within and between lines
+// and near cell borders (the random zigzags above have segments longer than a cell).
+TEST(PolygonCrossingsTest, FinelySampledLoopsGiveTheExhaustiveCrossings) {
+  const std::vector<std::tuple<double, double, int, Point2>> loops{
+      {20.0, 6.0, 9, {32.0, 32.0}}, {18.0, 5.0, 11, {40.0, 30.0}}, {12.0, 8.0, 7, {30.0, 42.0}}};
+  for (const double step : {0.3, 0.9}) {
+    std::vector<Polyline> lines;
+    for (const auto& [radius, wheel, turns, centre] : loops) {
+      Polyline line;
+      const int samples = static_cast<int>(2.0 * M_PI * (radius + wheel) * turns / 4.0 / step);
+      for (int k = 0; k < samples; ++k) {
+        const double t = 2.0 * M_PI * k / samples;
+        line.push_back(centre + radius * Point2(std::cos(t), std::sin(t)) +
+                       wheel * Point2(std::cos(turns * t), std::sin(turns * t)));
+      }
+      line.push_back(line.front());
+      lines.push_back(line);
+    }
+    for (const double cell : {2.0, 8.0}) {
+      const std::vector<Crossing> crossings = findCrossings(lines, cell);
+      std::set<PairKey> reported;
+      for (const Crossing& c : crossings) reported.insert(key(c.a, c.b));
+      EXPECT_EQ(reported.size(), crossings.size()) << "reported twice";
+      const std::set<PairKey> expected = exhaustiveCrossings(lines);
+      EXPECT_EQ(reported, expected) << "step " << step << ", cell " << cell;
+      EXPECT_GT(expected.size(), 40u);
+    }
+  }
+}
+
 // One finder for a sequence of searches (as the repair rounds use it): larger and smaller sets,
 // other extents, none at all; each time exactly the exhaustive check's crossings.
 TEST(PolygonCrossingsTest, AReusedFinderKeepsNothingOfTheSearchBefore) {

@@ -28,8 +28,9 @@ struct Crossing {
 std::vector<Crossing> findCrossings(const std::vector<Polyline>& lines, double cell = 8.0);
 
 /// findCrossings with its buckets kept between calls: the polygon check searches the same
-/// contours again in every repair round, and buckets of hundreds of thousands of segments in
-/// fresh memory cost a page fault per 4 KiB, as much as the search itself.
+/// contours again in every repair round, and buckets of tens of thousands of segments (the brain
+/// with rectangle waves at 12 waves/10 mm, 1.2 mm: 16,600 as drawn, 68,300 at 16 points per
+/// span) in fresh memory cost a page fault per 4 KiB, as much as the search itself.
 class CrossingFinder {
  public:
   CrossingFinder();
