@@ -39,6 +39,18 @@ TEST(PolylineTest, BucketedDistanceEqualsTheExhaustiveOne) {
   EXPECT_FALSE(distance.nearest(Point2(NAN, 2)).allFinite());
 }
 
+// The centre of a square is as near to all four sides: the lowest segment index is named,
+// whatever the grid and so the order its cells are visited in.
+TEST(PolylineTest, EqualDistancesNameTheLowestSegment) {
+  const Polyline square = {{10, 10}, {30, 10}, {30, 30}, {10, 30}, {10, 10}};
+  for (const double cell : {0.5, 3.0, 7.0, 40.0}) {
+    int segment = -1;
+    const Point2 nearest = PolylineDistance(square, cell).nearest(Point2(20, 20), &segment);
+    EXPECT_EQ(segment, 0) << cell;
+    EXPECT_NEAR((nearest - Point2(20, 10)).norm(), 0.0, 1e-12) << cell;
+  }
+}
+
 // A cell far too small for the polyline's extent is coarsened (the grid stays within 4 M cells),
 // a query far outside the grid is answered by trying every segment, a bad cell is refused.
 TEST(PolylineTest, BucketedDistanceCopesWithTinyCellsAndFarQueries) {

@@ -4,6 +4,7 @@
 // the domain [t_p, t_{n+1}]. Coordinates follow diffusion_curve.hpp (pixels, y down).
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <vector>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
@@ -100,6 +101,11 @@ class BSplineCurve {
   int nextSpan(double v, int span) const;
   /// derivativeAt for a v in the domain whose knot span findSpan(v) is `span`.
   Point2 evaluateOn(double v, int span, int order) const;
+  /// pointAt of the parameters[first ..] that lie on knot span `span` (which holds
+  /// parameters[first]), appended to `points`; returns the index after the last. A cubic span
+  /// with several of them is evaluated in Bezier form.
+  std::size_t pointsOnSpan(const std::vector<double>& parameters, std::size_t first, int span,
+                           std::vector<Point2>& points) const;
 
   int degree_;
   std::vector<double> knots_;
