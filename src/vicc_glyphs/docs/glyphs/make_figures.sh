@@ -32,7 +32,7 @@ covid falling incidence=150,hospitalisation=2,incidence_change=-15,hospitalisati
 covid steady_high incidence=1500,hospitalisation=6,incidence_change=0,hospitalisation_change=0
 "$tool" design-map "$designs/covid19_gradient.yaml" \
   --table "$designs/data/covid19_german_states_illustrative.csv" \
-  --out "$here/covid19_gradient_map_german_states_illustrative.png" --glyph-size 96 --width 760
+  --out "$here/covid19_gradient_map_german_states_illustrative.png" --glyph-size 96 --width 820
 # The README's overview: seven of the figures above side by side (needs ImageMagick).
 if command -v convert >/dev/null 2>&1; then
   (cd "$here" && convert rain_forecast_sine_probability40.png rain_forecast_sine_amount5.png \

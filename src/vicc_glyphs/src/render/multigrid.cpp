@@ -903,8 +903,8 @@ class Multigrid {
     }
   }
 
-  static void relaxRowBackwards(const CoarseLevel& level, Px* __restrict u,
-                                const Px* __restrict f, int y) {
+  static void relaxRowBackwards(const CoarseLevel& level, Px* __restrict u, const Px* __restrict f,
+                                int y) {
     const std::uint8_t* __restrict regular = level.regular.data();
     const float* __restrict inverse = level.inverse_centre.data();
     const float* __restrict east = level.east.data();

@@ -250,29 +250,97 @@ int drawnRows(const cv::Mat& glyph) {
   return 0;
 }
 
+// Where a glyph went on the map: its drawn (not white) pixels as a mask over the map rectangle
+// that holds them, and the map row just below its lowest drawn pixel.
+struct StampedGlyph {
+  cv::Rect drawn;  // map coordinates; empty when nothing of it is drawn within the map
+  cv::Mat mask;    // drawn.size(), non-zero where drawn
+  int bottom = 0;
+};
+
 // Darken-blend (per-channel minimum): the glyphs' white backgrounds do not cover neighbours.
-// Returns the map row just below the glyph's lowest drawn (not white) pixel.
-int stamp(cv::Mat& map, const cv::Mat& glyph, cv::Point centre) {
+StampedGlyph stamp(cv::Mat& map, const cv::Mat& glyph, cv::Point centre) {
   const cv::Rect target(centre.x - glyph.cols / 2, centre.y - glyph.rows / 2, glyph.cols,
                         glyph.rows);
   const cv::Rect clipped = target & cv::Rect(0, 0, map.cols, map.rows);
+  const cv::Mat part = glyph(clipped - target.tl());
   cv::Mat region = map(clipped);
-  cv::min(region, glyph(clipped - target.tl()), region);
-  return target.y + drawnRows(glyph);
+  cv::min(region, part, region);
+  StampedGlyph stamped;
+  stamped.bottom = target.y + drawnRows(glyph);
+  cv::Mat white, drawn;
+  cv::inRange(part, cv::Scalar::all(kWhiteBelow), cv::Scalar::all(255), white);
+  cv::bitwise_not(white, drawn);
+  const cv::Rect box = cv::boundingRect(drawn);
+  stamped.drawn = box + clipped.tl();
+  stamped.mask = drawn(box).clone();
+  return stamped;
 }
 
-// The label centred just below its glyph's drawn part (`below`), drawn after all glyphs and on
-// a white halo: a neighbouring glyph stamped later covered a label's letters (Saarland's spikes
-// over "RP" in the German states map) and left them on its colours.
-void label(cv::Mat& map, cv::Point centre, int below, const std::string& text) {
-  constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
-  constexpr double kScale = 0.45;
+// A label centred just below its glyph's drawn part, and the pixels its halo paints (a mask
+// over the map rectangle `box`).
+struct LabelPlace {
+  cv::Point origin;
+  cv::Rect box;
+  cv::Mat halo;
+};
+
+constexpr int kLabelFont = cv::FONT_HERSHEY_SIMPLEX;
+constexpr double kLabelScale = 0.45;
+constexpr int kHaloThickness = 3;
+
+LabelPlace placeLabel(const cv::Mat& map, cv::Point centre, int below, const std::string& text) {
   int baseline = 0;
-  const cv::Size size = cv::getTextSize(text, kFont, kScale, 1, &baseline);
+  const cv::Size size = cv::getTextSize(text, kLabelFont, kLabelScale, 1, &baseline);
   const cv::Point origin(centre.x - size.width / 2,
                          std::min(map.rows - baseline, below + 3 + size.height));
-  cv::putText(map, text, origin, kFont, kScale, cv::Scalar(255, 255, 255), 3, cv::LINE_AA);
-  cv::putText(map, text, origin, kFont, kScale, cv::Scalar(40, 40, 40), 1, cv::LINE_AA);
+  const int margin = 2 * kHaloThickness;  // beyond the thick stroke's reach
+  const cv::Rect box = cv::Rect(origin.x - margin, origin.y - size.height - margin,
+                                size.width + 2 * margin, size.height + baseline + 2 * margin) &
+                       cv::Rect(0, 0, map.cols, map.rows);
+  cv::Mat halo = cv::Mat::zeros(box.size(), CV_8U);
+  cv::putText(halo, text, origin - box.tl(), kLabelFont, kLabelScale, cv::Scalar(255),
+              kHaloThickness, cv::LINE_AA);
+  return {origin, box, halo};
+}
+
+// Drawn after all glyphs and on a white halo: a neighbouring glyph stamped later covered a
+// label's letters (Saarland's spikes over "RP" in the German states map) and left them on its
+// colours.
+void drawLabel(cv::Mat& map, const LabelPlace& place, const std::string& text) {
+  cv::putText(map, text, place.origin, kLabelFont, kLabelScale, cv::Scalar(255, 255, 255),
+              kHaloThickness, cv::LINE_AA);
+  cv::putText(map, text, place.origin, kLabelFont, kLabelScale, cv::Scalar(40, 40, 40), 1,
+              cv::LINE_AA);
+}
+
+// The halo keeps a label readable but whitens what lies under it: where that is part of another
+// row's glyph, the glyph loses pixels that may carry its data (a wave's tip, a dash), so the
+// user is told which rows to look at.
+void warnAboutCoveredGlyphs(const std::vector<MapRow>& rows,
+                            const std::vector<StampedGlyph>& glyphs,
+                            const std::vector<LabelPlace>& labels, std::ostream& err) {
+  size_t pairs = 0;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    for (size_t j = 0; j < rows.size(); ++j) {
+      const cv::Rect common = labels[i].box & glyphs[j].drawn;
+      if (j == i || common.empty()) continue;
+      cv::Mat whitened;
+      cv::bitwise_and(labels[i].halo(common - labels[i].box.tl()),
+                      glyphs[j].mask(common - glyphs[j].drawn.tl()), whitened);
+      if (cv::countNonZero(whitened) == 0) continue;
+      if (++pairs <= kMaxOverlapWarnings) {
+        err << "vicc_glyph design-map: warning: the label of '" << rows[i].label << "' (line "
+            << rows[i].line << ") covers part of the glyph of '" << rows[j].label << "' (line "
+            << rows[j].line << "); use a larger --width or a smaller --glyph-size, or move them "
+            << "apart in the table\n";
+      }
+    }
+  }
+  if (pairs > kMaxOverlapWarnings) {
+    err << "vicc_glyph design-map: warning: " << pairs - kMaxOverlapWarnings
+        << " more labels cover part of a glyph\n";
+  }
 }
 
 }  // namespace
@@ -317,18 +385,21 @@ int runDesignMapCommand(const std::vector<std::string>& args, std::ostream& out,
     RenderOptions options;
     options.background = glyph.background;
     const DiffusionCurveImage icon = design::loadIcon(glyph, glyph_size);  // once for the map
-    std::vector<int> bottoms;  // per row, the map row below its glyph
+    std::vector<StampedGlyph> stamped;
     for (size_t i = 0; i < rows.size(); ++i) {
       RenderResult result;
       renderer.render(design::buildGlyph(glyph, rows[i].levels, model, icon), options, result);
       requireSomethingDrawn(result.report, "row " + rows[i].label);
       cv::Mat bgr;
       cv::cvtColor(toRgb8(result.image), bgr, cv::COLOR_RGB2BGR);
-      bottoms.push_back(stamp(map, bgr, layout.centres[i]));
+      stamped.push_back(stamp(map, bgr, layout.centres[i]));
     }
+    std::vector<LabelPlace> labels;
     for (size_t i = 0; i < rows.size(); ++i) {
-      label(map, layout.centres[i], bottoms[i], rows[i].label);
+      labels.push_back(placeLabel(map, layout.centres[i], stamped[i].bottom, rows[i].label));
     }
+    warnAboutCoveredGlyphs(rows, stamped, labels, err);
+    for (size_t i = 0; i < rows.size(); ++i) drawLabel(map, labels[i], rows[i].label);
     writePng8(map, ChannelOrder::kBgr, output);
     out << "wrote " << output << " (" << rows.size()
         << (rows.size() == 1 ? " glyph)\n" : " glyphs)\n");

@@ -164,13 +164,22 @@ TEST_F(DesignCliTest, MapIsNorthUpAndItsHeightIsBounded) {
 // same map with an empty label; CC fixes the extent, so the three maps share one layout.
 TEST_F(DesignCliTest, MapLabelsStayReadableOverANeighbouringGlyph) {
   const std::string options = "--glyph-size 128 --width 500";
+  std::string warnings;
   const auto draw = [&](const std::string& rows) {
-    EXPECT_EQ(map(rows, options).exit_code, 0);
+    const auto run = map(rows, options);
+    EXPECT_EQ(run.exit_code, 0);
+    warnings = run.err;
     return cv::imread(mapPng().string());
   };
   const cv::Mat unlabelled = draw(",8,52,95,20\nCC,12,50,40,1\n");
   const cv::Mat alone = draw("AA,8,52,95,20\nCC,12,50,40,1\n");
+  EXPECT_EQ(warnings, "");
   const cv::Mat covered = draw("AA,8,52,95,20\nBB,8.1,51,95,20\nCC,12,50,40,1\n");
+  // The halo that keeps AA's label readable whitens a part of BB's glyph: said on stderr.
+  EXPECT_NE(warnings.find("warning: the label of 'AA' (line 2) covers part of the glyph of 'BB' "
+                          "(line 3)"),
+            std::string::npos)
+      << warnings;
   ASSERT_EQ(alone.size(), covered.size());
   ASSERT_EQ(alone.size(), unlabelled.size());
   const auto difference = [](const cv::Vec3b& a, const cv::Vec3b& b) {
