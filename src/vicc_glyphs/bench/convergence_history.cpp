@@ -51,7 +51,10 @@ void printHistory(const std::string& path, int size, int iterations) {
             << maxAbsoluteError(values, direct) << ")\n\n"
             << "| iteration | rms residual | error estimate | rms update | MAE vs direct | max "
                "error |\n|---:|---:|---:|---:|---:|---:|\n";
-  for (int k = 0; k <= iterations; ++k) {
+  // The fixed-count run stops early once the V-cycle's correction is below float resolution
+  // (see rendering.md): it has recorded fewer iterations than asked for, and so has the table.
+  const int recorded = std::min(iterations, static_cast<int>(full.residuals.size()) - 1);
+  for (int k = 0; k <= recorded; ++k) {
     MultigridOptions options;
     options.tolerance = 0.0;
     options.fine_cycles = k;
@@ -59,9 +62,17 @@ void printHistory(const std::string& path, int size, int iterations) {
     std::cout << "| " << k << " | " << std::scientific << std::setprecision(2) << full.residuals[k]
               << " | "
               << (k < static_cast<int>(full.error_estimates.size()) ? full.error_estimates[k] : NAN)
-              << " | " << (k > 0 ? full.updates[k - 1] : NAN) << " | " << std::fixed
-              << std::setprecision(5) << meanAbsoluteError(values, direct) << " | "
-              << maxAbsoluteError(values, direct) << " |\n";
+              << " | "
+              << (k > 0 && k <= static_cast<int>(full.updates.size()) ? full.updates[k - 1] : NAN)
+              << " | " << std::fixed << std::setprecision(5) << meanAbsoluteError(values, direct)
+              << " | " << maxAbsoluteError(values, direct) << " |\n";
+  }
+  if (recorded < iterations) {
+    std::cout << "\n(asked for " << iterations << " iterations; the solver stopped after "
+              << recorded << ": "
+              << (full.stopped_at_float_resolution ? "its correction was below float resolution"
+                                                   : "it recorded no more")
+              << ")\n";
   }
 }
 

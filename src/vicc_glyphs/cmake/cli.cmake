@@ -44,7 +44,8 @@ if(CATKIN_ENABLE_TESTING)
     VICC_GLYPH_BENCH_BINARY="$<TARGET_FILE:vicc_glyph_bench>"
     VICC_GLYPH_CONVERGENCE_BINARY="$<TARGET_FILE:vicc_glyph_convergence>"
     VICC_GLYPHS_STROKE_BENCH_BINARY="$<TARGET_FILE:vicc_glyphs_stroke_bench>"
-    VICC_GLYPHS_FEATURE_TRANSFORM_BENCH_BINARY="$<TARGET_FILE:vicc_glyphs_feature_transform_bench>")
+    VICC_GLYPHS_FEATURE_TRANSFORM_BENCH_BINARY="$<TARGET_FILE:vicc_glyphs_feature_transform_bench>"
+    VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
   # run_command.hpp: the workspace's shared test helpers
   target_include_directories(vicc_glyph_bench_usage_test PRIVATE
     ${CMAKE_CURRENT_SOURCE_DIR}/../../test/common)

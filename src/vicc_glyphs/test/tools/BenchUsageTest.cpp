@@ -26,6 +26,23 @@ TEST(BenchUsage, ConvergenceHistory) {
   expectUsageError(VICC_GLYPH_CONVERGENCE_BINARY, "--iterations 0 x.svg", "--iterations");
 }
 
+// The solver stops a fixed-count run once its correction is below float resolution; the table
+// ends there (it printed rows read past the end of the recorded history: 1.00e+00, 4.6e-310).
+TEST(BenchUsage, ConvergenceHistoryEndsWhereTheSolverStopped) {
+  const vicc_test::CommandResult run = vicc_test::runCommand(
+      std::string(VICC_GLYPH_CONVERGENCE_BINARY) + " --size 64 --iterations 40 " +
+      VICC_GLYPHS_DATA_DIR + "/icons/bell.svg");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("| 0 | "), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("| 40 | "), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("(asked for 40 iterations; the solver stopped after "),
+            std::string::npos)
+      << run.output;
+  for (const char* garbage : {"e-30", "e-31", "e-32", "e+00 |"}) {  // denormals, 1.00e+00
+    EXPECT_EQ(run.output.find(garbage), std::string::npos) << garbage << "\n" << run.output;
+  }
+}
+
 TEST(BenchUsage, StrokeBench) {
   expectUsageError(VICC_GLYPHS_STROKE_BENCH_BINARY, "--repeats 0", "--repeats");
   expectUsageError(VICC_GLYPHS_STROKE_BENCH_BINARY, "x.svg", "no positional arguments");
