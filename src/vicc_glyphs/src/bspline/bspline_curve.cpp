@@ -318,10 +318,12 @@ std::vector<Point2> BSplineCurve::pointsAt(const std::vector<double>& parameters
 
 std::size_t BSplineCurve::pointsOnSpan(const std::vector<double>& parameters, std::size_t first,
                                        int span, std::vector<Point2>& points) const {
-  // The span ending at the domain's end also holds the end (findSpan's special case).
+  // The span ending at the domain's end also holds the end (findSpan's special case) and what
+  // lies beyond; what lies before the domain is on the first span, which holds `first`. A
+  // non-finite parameter is refused by clampToDomain, below or where the next run starts.
   const bool last_span = knots_[span + 1] >= domainEnd();
   const auto on_span = [&](std::size_t i) {
-    return i < parameters.size() && (last_span || clampToDomain(parameters[i]) < knots_[span + 1]);
+    return i < parameters.size() && (last_span || parameters[i] < knots_[span + 1]);
   };
   std::size_t end = first + 1;
   while (on_span(end)) ++end;
