@@ -237,19 +237,6 @@ void warnAboutOverlaps(const std::vector<MapRow>& rows, const std::vector<cv::Po
   }
 }
 
-// The rows of a BGR glyph image down to its lowest pixel with a channel below kWhiteBelow.
-int drawnRows(const cv::Mat& glyph) {
-  for (int y = glyph.rows - 1; y >= 0; --y) {
-    const cv::Vec3b* row = glyph.ptr<cv::Vec3b>(y);
-    for (int x = 0; x < glyph.cols; ++x) {
-      if (row[x][0] < kWhiteBelow || row[x][1] < kWhiteBelow || row[x][2] < kWhiteBelow) {
-        return y + 1;
-      }
-    }
-  }
-  return 0;
-}
-
 // Where a glyph went on the map: its drawn (not white) pixels as a mask over the map rectangle
 // that holds them, and the map row just below its lowest drawn pixel.
 struct StampedGlyph {
@@ -266,14 +253,16 @@ StampedGlyph stamp(cv::Mat& map, const cv::Mat& glyph, cv::Point centre) {
   const cv::Mat part = glyph(clipped - target.tl());
   cv::Mat region = map(clipped);
   cv::min(region, part, region);
-  StampedGlyph stamped;
-  stamped.bottom = target.y + drawnRows(glyph);
+  // Drawn: a channel below kWhiteBelow. The label goes below the lowest such row of the whole
+  // glyph; the mask keeps the part within the map.
   cv::Mat white, drawn;
-  cv::inRange(part, cv::Scalar::all(kWhiteBelow), cv::Scalar::all(255), white);
+  cv::inRange(glyph, cv::Scalar::all(kWhiteBelow), cv::Scalar::all(255), white);
   cv::bitwise_not(white, drawn);
-  const cv::Rect box = cv::boundingRect(drawn);
-  stamped.drawn = box + clipped.tl();
-  stamped.mask = drawn(box).clone();
+  const cv::Rect box = cv::boundingRect(drawn);  // glyph coordinates; empty: nothing drawn
+  StampedGlyph stamped;
+  stamped.bottom = target.y + box.br().y;
+  stamped.drawn = (box + target.tl()) & clipped;
+  stamped.mask = drawn(stamped.drawn - target.tl()).clone();
   return stamped;
 }
 
