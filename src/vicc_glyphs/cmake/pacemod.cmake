@@ -92,14 +92,14 @@ if(CATKIN_ENABLE_TESTING)
   # Real icons end to end (imports, renders): the fast subset of bench/pacemod.
   if(TARGET vicc_glyphs_pacemod_measure)
     catkin_add_gtest(vicc_glyphs_pacemod_glyph_test test/pacemod/PacemodGlyphTest.cpp
-      test/pacemod/CrossingRegressionTest.cpp)
+      test/pacemod/CrossingRegressionTest.cpp test/pacemod/WavedGlyphSolveTest.cpp)
     target_compile_options(vicc_glyphs_pacemod_glyph_test PRIVATE ${VICC_WARNINGS})
     target_include_directories(vicc_glyphs_pacemod_glyph_test PRIVATE bench/pacemod)
     target_compile_definitions(vicc_glyphs_pacemod_glyph_test PRIVATE
       VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data"
       VICC_GLYPHS_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/test/data")
     target_link_libraries(vicc_glyphs_pacemod_glyph_test vicc_glyphs_pacemod_measure
-      vicc_glyphs_io vicc_glyphs_render gtest_main)
+      vicc_glyphs_io vicc_glyphs_render vicc_glyphs_render_reference gtest_main)
   endif()
   # vicc_glyph modify as a user runs it.
   if(TARGET vicc_glyph)

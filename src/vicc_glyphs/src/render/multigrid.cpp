@@ -405,14 +405,18 @@ class Multigrid {
   // Gauss-Seidel sweeps (forwards, then backwards) on the free pixels around the seeds, the
   // pixels whose start residual is large (see LocalRelaxationSet), and their residuals updated;
   // returns `squares` (the residuals' sum of squares) updated. Not when the seeds are a large
-  // share of the image: the start is then poor everywhere, a matter for the V-cycles.
+  // share of the image: the start is then poor everywhere, a matter for the V-cycles. Isolated
+  // spots (few seeds: a waved contour's tips and slits) get a wider square and more sweeps.
   Px relaxStartLocally(Px squares) {
     if (seeds_.empty() || seeds_.size() > free_count_ / kMaxSeedShare) return squares;
-    local_.build(fine_, seeds_, kLocalRelaxationRadius);
+    const bool isolated = seeds_.size() <= free_count_ / kIsolatedSeedShare;
+    local_.build(fine_, seeds_, isolated ? kIsolatedSpotRadius : kLocalRelaxationRadius);
+    const int sweeps = isolated ? std::max(options_.local_relaxation, options_.isolated_spot_sweeps)
+                                : options_.local_relaxation;
     Px* __restrict u = u_[0].data();
     Px* __restrict r = r_.data();
     const std::vector<int>& pixels = local_.pixels();
-    for (int sweep = 0; sweep < options_.local_relaxation; ++sweep) {
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
       for (const int p : pixels) relaxAt<false>(u, nullptr, p);
       for (auto it = pixels.rbegin(); it != pixels.rend(); ++it) relaxAt<false>(u, nullptr, *it);
     }
@@ -1226,6 +1230,11 @@ class Multigrid {
   static constexpr float kLocalRelaxationResidual = 2e-3f;
   static constexpr int kLocalRelaxationRadius = 2;
   static constexpr size_t kMaxSeedShare = 16;
+  // Isolated spots: at most one seed per this many free pixels (a waved glyph at 512 px has
+  // up to 270 seeds, the ladybug 3,652), relaxed on squares of this radius (see
+  // MultigridOptions::isolated_spot_sweeps and docs/rendering.md, session 37).
+  static constexpr size_t kIsolatedSeedShare = 256;
+  static constexpr int kIsolatedSpotRadius = 3;
   // Singleton pieces (see singletonPixels; measurements in docs/rendering.md, session 30). On
   // the ladybug at 512 px 0.15 picks 7,338 pixels (3 iterations instead of 6), 0.1 14,751 (3,
   // but E's factorisation costs more than they save); at 1024 px 0.15 picks 133,867 pixels,
@@ -1297,7 +1306,8 @@ void validate(const GridProblem& problem, const MultigridOptions& options) {
   }
   if (options.pre_smoothing < 0 || options.post_smoothing < 0 || options.intermediate_cycles < 0 ||
       options.next_to_finest_cycles < 0 || options.max_fine_cycles < 0 || options.fine_cycles < 0 ||
-      options.local_relaxation < 0 || !(options.tolerance >= 0.0)) {
+      options.local_relaxation < 0 || options.isolated_spot_sweeps < 0 ||
+      !(options.tolerance >= 0.0)) {
     throw std::invalid_argument("solveMultigrid: negative counts or tolerance");
   }
   if (!std::isfinite(options.extra_next_to_finest_cycle_above) ||

@@ -58,6 +58,12 @@ struct MultigridOptions {
   /// spots that P cannot represent (sharp wave tips, curve ends), and the V-cycle reduces them
   /// only about tenfold per iteration (see docs/rendering.md).
   int local_relaxation = 2;
+  /// With local relaxation: the sweeps (if more than local_relaxation) when the seeds are
+  /// isolated spots, at most one per 256 free pixels (a waved contour's tips and the slits
+  /// between its lobes, where Gauss-Seidel needs more than 2 sweeps; the squares' radius is
+  /// then 3 instead of 2). A few hundred pixels: far cheaper than the CG iteration it saves
+  /// on about 1 in 6 waved glyphs that took one (see docs/rendering.md, session 37).
+  int isolated_spot_sweeps = 16;
   /// > 0 (the default): iterate on the finest level until the error estimate, the largest
   /// magnitude of the V-cycle's correction B r over the free pixels and channels (colour
   /// units, 0..1), is at most this, at most `max_fine_cycles` times; the estimates are then
