@@ -61,8 +61,8 @@ struct MultigridOptions {
   /// With local relaxation: the sweeps (if more than local_relaxation) when the seeds are
   /// isolated spots, at most one per 256 free pixels (a waved contour's tips and the slits
   /// between its lobes, where Gauss-Seidel needs more than 2 sweeps; the squares' radius is
-  /// then 3 instead of 2). A few hundred pixels: far cheaper than the CG iteration it saves
-  /// on about 1 in 6 waved glyphs that took one (see docs/rendering.md, session 37).
+  /// then 3 instead of 2). A few hundred pixels: far cheaper than the CG iteration that about
+  /// 1 in 10 waved glyphs took for want of them (see docs/rendering.md, session 37).
   int isolated_spot_sweeps = 16;
   /// > 0 (the default): iterate on the finest level until the error estimate, the largest
   /// magnitude of the V-cycle's correction B r over the free pixels and channels (colour
