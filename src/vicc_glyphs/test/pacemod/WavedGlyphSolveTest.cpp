@@ -52,15 +52,6 @@ TEST(WavedGlyphSolveTest, MoreSweepsAtIsolatedSpotsSaveTheCgIterationOfARectangl
   EXPECT_LT(maxAbsoluteError(after.values, direct), MultigridOptions::kDefaultTolerance);
 }
 
-TEST(WavedGlyphSolveTest, NegativeIsolatedSpotSweepsAreRefused) {
-  GridProblem problem = openGridProblem(16, 16, 1);
-  problem.fixed[0] = 1;
-  MultigridOptions options;
-  options.isolated_spot_sweeps = -1;
-  std::vector<float> values;
-  EXPECT_THROW(MultigridSolver().solve(problem, options, values, nullptr), std::invalid_argument);
-}
-
 }  // namespace
 }  // namespace pacemod
 }  // namespace vicc_glyphs

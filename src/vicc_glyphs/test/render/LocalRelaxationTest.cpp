@@ -112,10 +112,13 @@ TEST(LocalRelaxationTest, ASmoothStartIsLeftAlone) {
 
 TEST(LocalRelaxationTest, NegativeSweepsAreRefused) {
   const GridProblem problem = assembleColorProblem(circleImage(32, 32), 32, 32, 1.0, Color::Zero());
-  MultigridOptions options;
-  options.local_relaxation = -1;
-  std::vector<float> values;
-  EXPECT_THROW(MultigridSolver().solve(problem, options, values, nullptr), std::invalid_argument);
+  for (int MultigridOptions::*sweeps :
+       {&MultigridOptions::local_relaxation, &MultigridOptions::isolated_spot_sweeps}) {
+    MultigridOptions options;
+    options.*sweeps = -1;
+    std::vector<float> values;
+    EXPECT_THROW(MultigridSolver().solve(problem, options, values, nullptr), std::invalid_argument);
+  }
 }
 
 }  // namespace
