@@ -2,7 +2,9 @@
 // a usage error (exit code 2) naming it, followed by the usage; --help prints the usage.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <string>
+#include <vector>
 
 #include "expect_usage_error.hpp"
 
@@ -79,6 +81,26 @@ TEST(BenchUsage, PacemodBenchSaysWhichHeapItMeasuresWith) {
   EXPECT_EQ(plain.exit_code, 0) << plain.output;
   EXPECT_NE(plain.output.find("heap: glibc defaults (--default-heap)"), std::string::npos)
       << plain.output;
+}
+
+// --repeats N makes each glyph N times and writes one line of times per glyph (the fastest run).
+TEST(BenchUsage, PacemodBenchRepeatsEachGlyphAndKeepsOneLineOfTimes) {
+  expectUsageError(VICC_GLYPHS_PACEMOD_BENCH_BINARY, "--repeats 0", "--repeats");
+  expectUsageError(VICC_GLYPHS_PACEMOD_BENCH_BINARY, "--repeats 1.5", "--repeats");
+  const std::string times = ::testing::TempDir() + "pacemod_bench_repeats.tsv";
+  const vicc_test::CommandResult run = vicc_test::runCommand(
+      std::string(VICC_GLYPHS_PACEMOD_BENCH_BINARY) +
+      " --icon bell.svg --waveform sine --frequency 2 --amplitude 0.4 --repeats 2 --times " +
+      times);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("times of the fastest of 2 run(s) per glyph"), std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("| sine, 2, 0.4 | 1 |"), std::string::npos) << run.output;
+  std::ifstream file(times);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(file, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 2u);  // the header and the one glyph
+  EXPECT_EQ(lines[1].rfind("bell.svg\tsine\t2\t0.4\t", 0), 0u) << lines[1];
 }
 #endif
 
