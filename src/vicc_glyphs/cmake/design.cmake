@@ -41,6 +41,12 @@ if(TARGET vicc_glyph)
     VICC_GLYPHS_DESIGNS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/designs")
   target_link_libraries(vicc_glyphs_design_bench vicc_glyphs_design vicc_glyphs_pacemod vicc_glyphs_render
     vicc_common_cli)
+  if(TARGET vicc_glyph_bench_usage_test)  # cli.cmake: the benches' command-line tests
+    target_compile_definitions(vicc_glyph_bench_usage_test PRIVATE
+      VICC_GLYPHS_DESIGN_BENCH_BINARY="$<TARGET_FILE:vicc_glyphs_design_bench>"
+      VICC_GLYPHS_DESIGNS_DIR="${CMAKE_CURRENT_SOURCE_DIR}/designs")
+    add_dependencies(vicc_glyph_bench_usage_test vicc_glyphs_design_bench)
+  endif()
 endif()
 
 if(CATKIN_ENABLE_TESTING)

@@ -43,9 +43,7 @@ WaveOptions options;
 // --overlays: an SVG picture of every glyph that fails a check or has a new sharp turn.
 std::string overlay_dir;
 std::FILE* times_file = nullptr;  // --times: one line per glyph
-// --repeats: each glyph made N times; its times are those of the fastest run (the others were
-// slowed by whatever else the machine did; the results are the same every time).
-int repeats = 1;
+int repeats = 1;  // --repeats: each glyph made N times, the fastest run's times kept
 
 struct Totals {
   int glyphs = 0;
@@ -63,8 +61,7 @@ void runGlyph(const fs::path& icon, const WaveSpec& spec, DiffusionCurveRenderer
               RenderResult& result, Totals& totals) {
   DiffusionCurveImage original, image;
   std::vector<CurveWaveReport> reports;
-  GlyphTimes fastest;
-  for (int run = 0; run < repeats; ++run) {
+  const GlyphTimes fastest = bench::fastestRun(repeats, [&] {
     const double start = bench::threadCpuMilliseconds();
     image = loadDiffusionCurves(icon.string(), kSize);
     const double modify_start = bench::threadCpuMilliseconds();
@@ -74,9 +71,8 @@ void runGlyph(const fs::path& icon, const WaveSpec& spec, DiffusionCurveRenderer
     const double render_start = bench::threadCpuMilliseconds();
     if (render_glyphs) renderer.render(image, RenderOptions{}, result);
     const double end = bench::threadCpuMilliseconds();
-    const GlyphTimes times{modify_start - start, render_start - copied, end - render_start};
-    if (run == 0 || times.total() < fastest.total()) fastest = times;
-  }
+    return GlyphTimes{modify_start - start, render_start - copied, end - render_start};
+  });
   totals.modify_ms.push_back(fastest.modify_ms);
   totals.render_ms.push_back(fastest.render_ms);
   totals.total_ms.push_back(fastest.total());

@@ -104,4 +104,23 @@ TEST(BenchUsage, PacemodBenchRepeatsEachGlyphAndKeepsOneLineOfTimes) {
 }
 #endif
 
+#ifdef VICC_GLYPHS_DESIGN_BENCH_BINARY  // built with the design part (design.cmake)
+// The design bench's --repeats: the same rule; one line of times per level combination.
+TEST(BenchUsage, DesignBenchRepeatsEachGlyphAndKeepsOneLineOfTimes) {
+  expectUsageError(VICC_GLYPHS_DESIGN_BENCH_BINARY, "--repeats 0", "--repeats");
+  const std::string times = ::testing::TempDir() + "design_bench_repeats.tsv";
+  const vicc_test::CommandResult run =
+      vicc_test::runCommand(std::string(VICC_GLYPHS_DESIGN_BENCH_BINARY) +
+                            " " VICC_GLYPHS_DESIGNS_DIR "/intracranial_pressure.yaml" +
+                            " --size 64 --repeats 2 --times " + times);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("times of the fastest of 2 run(s) per glyph"), std::string::npos)
+      << run.output;
+  std::ifstream file(times);
+  int lines = 0;
+  for (std::string line; std::getline(file, line);) ++lines;
+  EXPECT_EQ(lines, 1 + 21);  // the header and the intracranial pressure design's 21 glyphs
+}
+#endif
+
 }  // namespace
