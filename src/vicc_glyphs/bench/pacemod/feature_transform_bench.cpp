@@ -1,10 +1,13 @@
-// Chooses the feature transform of the skeleton guard by measurement: for every icon of
-// data/icons at 512 px, the CPU time to build NearestCurvePoint with OpenCV's labelled distance
-// transform and with Maurer's exact transform, and the error of the distance to the returned
-// point against the exact distance to the curves' polylines at 20000 random points.
+// Chooses the skeleton guard's nearest-point method by measurement: for every icon of
+// data/icons at 512 px, the CPU time to build NearestCurvePoint with the bucketed segments,
+// OpenCV's labelled distance transform and Maurer's exact transform, the time of 20000 queries
+// at random points and of 20000 at 0.1-1.2 mm from the curves (where the guard asks), and the
+// error of the distance to the returned point against the exact distance to the curves'
+// polylines at the random points.
 // Usage: vicc_glyphs_feature_transform_bench [ICON_DIR] (default: the vendored MDI icons)
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -31,12 +34,39 @@ double threadMilliseconds() {
 
 struct Result {
   std::vector<double> build_ms;
+  std::vector<double> random_query_ms;
+  std::vector<double> near_query_ms;
   double error_sum = 0.0;
   double error_max = 0.0;
   long queries = 0;
 };
 
-void measure(const std::vector<Polyline>& lines, FeatureTransform method, Result& result) {
+// Points 0.1-1.2 mm (at 512 px for 50 mm) from random polyline vertices, off to either side.
+std::vector<Point2> pointsNearTheCurves(const std::vector<Polyline>& lines) {
+  std::mt19937 random(11);
+  std::vector<Point2> points;
+  std::uniform_real_distribution<double> distance(1.024, 12.3), angle(0.0, 2.0 * M_PI);
+  while (points.size() < 20000) {
+    const Polyline& line = lines[random() % lines.size()];
+    if (line.empty()) continue;
+    const double a = angle(random);
+    points.push_back(line[random() % line.size()] +
+                     distance(random) * Point2(std::cos(a), std::sin(a)));
+  }
+  return points;
+}
+
+template <class Query>
+double queryMilliseconds(const std::vector<Point2>& points, Query&& query) {
+  double sum = 0.0;
+  const double start = threadMilliseconds();
+  for (const Point2& p : points) sum += query(p).x();
+  const double elapsed = threadMilliseconds() - start;
+  if (!std::isfinite(sum)) std::printf(" ");  // keeps the queries from being optimised away
+  return elapsed;
+}
+
+void measure(const std::vector<Polyline>& lines, NearestPointMethod method, Result& result) {
   std::vector<double> times;
   for (int repeat = 0; repeat < 5; ++repeat) {
     const double start = threadMilliseconds();
@@ -48,8 +78,12 @@ void measure(const std::vector<Polyline>& lines, FeatureTransform method, Result
   const NearestCurvePoint field(lines, 512, 512, 1.0, method);
   std::mt19937 random(7);
   std::uniform_real_distribution<double> coordinate(0.0, 512.0);
-  for (int i = 0; i < 20000; ++i) {
-    const Point2 q(coordinate(random), coordinate(random));
+  std::vector<Point2> anywhere;
+  for (int i = 0; i < 20000; ++i) anywhere.emplace_back(coordinate(random), coordinate(random));
+  const auto nearest = [&](const Point2& p) { return field.nearest(p); };
+  result.random_query_ms.push_back(queryMilliseconds(anywhere, nearest));
+  result.near_query_ms.push_back(queryMilliseconds(pointsNearTheCurves(lines), nearest));
+  for (const Point2& q : anywhere) {
     double exact = 1e300;
     for (const Polyline& line : lines) exact = std::min(exact, distanceToPolyline(q, line));
     const double error = (q - field.nearest(q)).norm() - exact;
@@ -65,9 +99,10 @@ std::string usage() {
   return cli::helpText(
       "vicc_glyphs_feature_transform_bench [ICON_DIR]",
       "For every SVG icon of ICON_DIR (default: the vendored MDI icons) at 512 px: CPU time to "
-      "build the skeleton guard's\nnearest-curve-point field with OpenCV's labelled distance "
-      "transform and with Maurer's transform, and the\ndistance error at 20000 random points "
-      "(Markdown table on stdout). Exit code 0 on success, 1 on an error,\n2 on a usage error.",
+      "build the skeleton guard's\nnearest-curve-point field with bucketed segments, OpenCV's "
+      "labelled distance transform and Maurer's\ntransform, to answer 20000 queries at random "
+      "points and 20000 near the curves, and the distance error\nat the random points "
+      "(Markdown table on stdout). Exit code 0 on success, 1 on an error, 2 on a usage error.",
       {});
 }
 
@@ -83,25 +118,31 @@ int run(const std::vector<std::string>& args) {
   }
   if (icons.empty()) throw cli::UsageError("no .svg icon in " + dir.string());
   std::sort(icons.begin(), icons.end());
-  Result opencv, maurer;
+  Result segments, opencv, maurer;
   for (const fs::path& icon : icons) {
     const DiffusionCurveImage image = loadDiffusionCurves(icon.string(), 512);
     std::vector<Polyline> lines;
     for (const DiffusionCurve& curve : image.curves) lines.push_back(sampleCurve(curve, 16));
-    measure(lines, FeatureTransform::OpenCvLabels, opencv);
-    measure(lines, FeatureTransform::Maurer, maurer);
+    measure(lines, NearestPointMethod::ExactSegments, segments);
+    measure(lines, NearestPointMethod::OpenCvLabels, opencv);
+    measure(lines, NearestPointMethod::Maurer, maurer);
   }
   std::printf("%zu icons at 512 px, grid 520 x 520, 20000 random queries each\n\n", icons.size());
   std::printf(
-      "| transform | build ms (median over icons) | build ms (max) | mean distance error px | max "
-      "distance error px |\n|---|---|---|---|---|\n");
+      "| method | build ms (median over icons) | build ms (max) | 20000 random queries ms "
+      "(median) | 20000 queries near the curves ms (median) | mean distance error px | max "
+      "distance error px |\n|---|---|---|---|---|---|---|\n");
+  const auto median = [](std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+  };
   for (const auto& [name, r] :
-       {std::pair<const char*, const Result&>{"OpenCV DIST_LABEL_PIXEL, mask 5", opencv},
+       {std::pair<const char*, const Result&>{"bucketed segments (exact)", segments},
+        std::pair<const char*, const Result&>{"OpenCV DIST_LABEL_PIXEL, mask 5", opencv},
         std::pair<const char*, const Result&>{"Maurer et al. 2003", maurer}}) {
-    std::vector<double> sorted = r.build_ms;
-    std::sort(sorted.begin(), sorted.end());
-    std::printf("| %s | %.2f | %.2f | %.4f | %.3f |\n", name, sorted[sorted.size() / 2],
-                sorted.back(), r.error_sum / r.queries, r.error_max);
+    std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.4f | %.3f |\n", name, median(r.build_ms),
+                *std::max_element(r.build_ms.begin(), r.build_ms.end()), median(r.random_query_ms),
+                median(r.near_query_ms), r.error_sum / r.queries, r.error_max);
   }
   return 0;
 }

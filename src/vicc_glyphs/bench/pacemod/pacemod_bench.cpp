@@ -3,7 +3,7 @@
 // rendered; then, on the result, the waves along each modified contour are counted and their
 // amplitudes measured from the distance to the original contour (wave_measurement.hpp), and
 // all polygons are checked for crossings. Prints Markdown tables (see README.md here).
-// Usage (--help): vicc_glyphs_pacemod_bench [ICON_DIR] [--quick] [--verbose] [--opencv-labels]
+// Usage (--help): vicc_glyphs_pacemod_bench [ICON_DIR] [--quick] [--verbose] [--nearest-point M]
 //        [--waveform sine|triangle|sawtooth|rectangle] [--no-render]
 //        [--icon NAME.svg] [--frequency WAVES_PER_10MM] [--amplitude MM] [--overlays DIR]
 //        [--times FILE.tsv] [--repeats N] [--default-heap]
@@ -164,7 +164,9 @@ const std::vector<cli::OptionSpec> kOptionSpecs = {
     {"quick", "", "one frequency (4 waves/10 mm) and one amplitude (0.5 mm)"},
     {"verbose", "", "list every glyph and lobe that fails a check, and new sharp turns"},
     {"no-render", "", "checks only, no rendering (faster searches for failures)"},
-    {"opencv-labels", "", "OpenCV's labelled distance transform for the skeleton guard"},
+    {"nearest-point", "M",
+     "the skeleton guard's nearest curve points: exact-segments (default), maurer or "
+     "opencv-labels (feature transforms)"},
     {"waveform", "W", "only this waveform: sine, triangle, sawtooth or rectangle"},
     {"icon", "NAME.svg", "only this icon"},
     {"frequency", "F", "only this frequency, waves per 10 mm"},
@@ -194,7 +196,15 @@ int run(const std::vector<std::string>& args) {
   const bool quick = parsed.flag("quick");
   verbose = parsed.flag("verbose");
   render_glyphs = !parsed.flag("no-render");
-  if (parsed.flag("opencv-labels")) options.feature_transform = FeatureTransform::OpenCvLabels;
+  const std::string nearest_point = parsed.value("nearest-point");
+  if (nearest_point == "maurer") {
+    options.nearest_point_method = NearestPointMethod::Maurer;
+  } else if (nearest_point == "opencv-labels") {
+    options.nearest_point_method = NearestPointMethod::OpenCvLabels;
+  } else if (!nearest_point.empty() && nearest_point != "exact-segments") {
+    throw cli::UsageError("--nearest-point must be exact-segments, maurer or opencv-labels, not " +
+                          nearest_point);
+  }
   const std::string only_waveform = parsed.value("waveform");
   if (!only_waveform.empty() && only_waveform != "sine" && only_waveform != "triangle" &&
       only_waveform != "sawtooth" && only_waveform != "rectangle") {
@@ -234,9 +244,11 @@ int run(const std::vector<std::string>& args) {
   RenderResult result;
   std::map<std::string, Totals> by_waveform;
   std::printf(
-      "%zu icons, %d px = %.0f mm, heap: %s, times of the fastest of %d run(s) per glyph, "
-      "load average at the start %s\n\n",
-      icons.size(), kSize, kSizeMm, heap.c_str(), repeats, bench::loadAverage().c_str());
+      "%zu icons, %d px = %.0f mm, heap: %s, nearest curve points: %s, times of the fastest of "
+      "%d run(s) per glyph, load average at the start %s\n\n",
+      icons.size(), kSize, kSizeMm, heap.c_str(),
+      nearest_point.empty() ? "exact-segments" : nearest_point.c_str(), repeats,
+      bench::loadAverage().c_str());
   printHeader("waveform, waves/10 mm, amplitude mm");
   for (Waveform waveform :
        {Waveform::Sine, Waveform::Triangle, Waveform::Sawtooth, Waveform::Rectangle}) {

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "vicc_glyphs/render/pixel_buffer.hpp"
 
@@ -32,16 +33,70 @@ void assignReused(std::vector<T>& vector, std::size_t n, const T& value) {
   vector.assign(n, value);
 }
 
+// Whether the segment a b has a point in the box [lo, hi] (Liang-Barsky clipping).
+bool segmentMeetsBox(const Point2& a, const Point2& b, const Point2& lo, const Point2& hi) {
+  if (!a.allFinite() || !b.allFinite()) return false;
+  double enter = 0.0, leave = 1.0;
+  const Point2 d = b - a;
+  for (int axis = 0; axis < 2; ++axis) {
+    if (d[axis] == 0.0) {
+      if (a[axis] < lo[axis] || a[axis] > hi[axis]) return false;
+      continue;
+    }
+    double t0 = (lo[axis] - a[axis]) / d[axis], t1 = (hi[axis] - a[axis]) / d[axis];
+    if (t0 > t1) std::swap(t0, t1);
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+  }
+  return enter <= leave;
+}
+
+std::invalid_argument nothingNearTheFrame(int width, int height) {
+  return std::invalid_argument("no curve of the image comes near its " + std::to_string(width) +
+                               " x " + std::to_string(height) +
+                               " px frame: there is nothing to modify");
+}
+
 }  // namespace
 
 NearestCurvePoint::NearestCurvePoint(const std::vector<std::vector<Point2>>& polylines, int width,
-                                     int height, double grid_scale, FeatureTransform method)
+                                     int height, double grid_scale, NearestPointMethod method)
     : scale_(grid_scale), margin_(4) {
   if (width < 1 || height < 1 || !(grid_scale > 0.0) || !std::isfinite(grid_scale)) {
     throw std::invalid_argument("NearestCurvePoint: size and grid scale must be positive");
   }
   grid_ = cv::Size(static_cast<int>(std::ceil(width * scale_)) + 2 * margin_,
                    static_cast<int>(std::ceil(height * scale_)) + 2 * margin_);
+  if (method == NearestPointMethod::ExactSegments) {
+    bucketSegments(polylines, width, height);
+  } else {
+    transformGrid(polylines, width, height, method);
+  }
+}
+
+void NearestCurvePoint::bucketSegments(const std::vector<std::vector<Point2>>& polylines, int width,
+                                       int height) {
+  // The frame the transforms' grid covers: a curve must come near it, as there.
+  const Point2 lo = Point2::Constant(-margin_ / scale_);
+  const Point2 hi(grid_.width / scale_ + lo.x(), grid_.height / scale_ + lo.y());
+  bool near_the_frame = false;
+  for (const Polyline& line : polylines) {
+    if (line.empty()) continue;
+    // A single point is a segment of no length, so that it counts as in the transforms.
+    lines_.push_back(line.size() == 1 ? Polyline{line.front(), line.front()} : line);
+    const Polyline& kept = lines_.back();
+    for (std::size_t i = 0; i + 1 < kept.size() && !near_the_frame; ++i) {
+      near_the_frame = segmentMeetsBox(kept[i], kept[i + 1], lo, hi);
+    }
+  }
+  if (!near_the_frame) throw nothingNearTheFrame(width, height);
+  std::vector<const Polyline*> pointers;
+  for (const Polyline& line : lines_) pointers.push_back(&line);
+  segments_ = std::make_unique<PolylineSetDistance>(std::move(pointers), kSegmentCellPx);
+}
+
+void NearestCurvePoint::transformGrid(const std::vector<std::vector<Point2>>& polylines, int width,
+                                      int height, NearestPointMethod method) {
   buffers_ = takeBuffers();
   FieldBuffers& b = *buffers_;
   b.mask.create(grid_, CV_8U);
@@ -73,12 +128,8 @@ NearestCurvePoint::NearestCurvePoint(const std::vector<std::vector<Point2>>& pol
     }
     if (!line.empty()) mark(line.back());
   }
-  if (cv::countNonZero(b.mask) == 0) {
-    throw std::invalid_argument("no curve of the image comes near its " + std::to_string(width) +
-                                " x " + std::to_string(height) +
-                                " px frame: there is nothing to modify");
-  }
-  if (method == FeatureTransform::Maurer) {
+  if (cv::countNonZero(b.mask) == 0) throw nothingNearTheFrame(width, height);
+  if (method == NearestPointMethod::Maurer) {
     render_detail::reserveWithHugePages(b.feature, cells);
     render_detail::reserveWithHugePages(b.row_feature, cells);
     maurerFeatureTransform(b.mask, b.feature, b.row_feature);
@@ -92,6 +143,10 @@ NearestCurvePoint::~NearestCurvePoint() {
 }
 
 Point2 NearestCurvePoint::nearest(const Point2& query) const {
+  if (segments_) {
+    const PolylineSetDistance::Segment segment = segments_->nearestSegment(query);
+    return segment.line < 0 ? Point2::Zero() : segments_->nearestOn(segment, query);
+  }
   // Clamp in floating point first: a far-away or non-finite query must not overflow an int.
   auto cell = [](double g, int size) {
     return static_cast<int>(std::isfinite(g) ? std::clamp(g, 0.0, size - 1.0) : 0.0);
@@ -116,6 +171,17 @@ Point2 NearestCurvePoint::nearest(const Point2& query) const {
     }
   }
   return best;
+}
+
+std::optional<Point2> NearestCurvePoint::nearestWithin(const Point2& query, double radius) const {
+  if (segments_) {
+    const PolylineSetDistance::Segment segment = segments_->nearestSegment(query, radius);
+    if (segment.line < 0) return std::nullopt;
+    return segments_->nearestOn(segment, query);
+  }
+  const Point2 found = nearest(query);
+  if (!((found - query).norm() < radius)) return std::nullopt;
+  return found;
 }
 
 }  // namespace pacemod

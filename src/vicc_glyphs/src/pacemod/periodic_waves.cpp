@@ -70,13 +70,38 @@ void build(WavedContour& contour, const Context& context) {
   if (contour.caps.empty()) contour.caps.assign(contour.wave->guarded.size(), kNoCap);
 }
 
+// Only closed contours take waves.
+bool closedContour(const DiffusionCurve& curve) {
+  return curve.segmentCount() >= 1 &&
+         (curve.control_points.front() - curve.control_points.back()).norm() <= 1e-6;
+}
+
+// The skeleton guard's polylines of the image's curves (`waved`: sorted indices of the curves
+// to be waved), within 0.005 px of them, far below the guard's least slack (5 % of a 1 px
+// amplitude), since its nearest points are exact on the polylines. A contour to be waved is
+// taken as its waves are built, without its sub-pixel teeth: the guard must find its knot
+// points on it, not up to a few tenths of a pixel in front of them (16 pieces per Bezier
+// segment and the curve with its teeth cut some 1 px waves to 0 that way).
+std::vector<Polyline> guardPolylines(const DiffusionCurveImage& image,
+                                     const std::vector<int>& waved) {
+  Flattening flattening;
+  flattening.tolerance = 0.005;
+  flattening.max_piece_length = 8.0;
+  std::vector<Polyline> lines;
+  for (int i = 0; i < static_cast<int>(image.curves.size()); ++i) {
+    const DiffusionCurve& curve = image.curves[i];
+    const bool to_wave = std::binary_search(waved.begin(), waved.end(), i) && closedContour(curve);
+    lines.push_back(flattenCurve(to_wave ? withoutTeeth(curve) : curve, nullptr, flattening));
+  }
+  return lines;
+}
+
 // Null when the curve stays unchanged (the report says why).
 std::unique_ptr<WavedContour> prepare(const DiffusionCurve& curve, int index,
                                       const Context& context, CurveWaveReport& report) {
   report.curve = index;
   report.requested_amplitude_mm = context.spec.amplitude_mm;
-  if (curve.segmentCount() < 1 ||
-      (curve.control_points.front() - curve.control_points.back()).norm() > 1e-6) {
+  if (!closedContour(curve)) {
     report.skipped = "not a closed curve";
     return nullptr;
   }
@@ -326,11 +351,9 @@ std::vector<CurveWaveReport> applyWaves(DiffusionCurveImage& image,
   std::unique_ptr<NearestCurvePoint> field;
   std::unique_ptr<SkeletonGuard> guard;
   if (options.prevent_self_intersection && !image.curves.empty()) {
-    std::vector<Polyline> lines;
-    for (const DiffusionCurve& curve : image.curves) lines.push_back(sampleCurve(curve, 16));
-    field =
-        std::make_unique<NearestCurvePoint>(lines, image.width, std::max(image.height, 1),
-                                            options.field_grid_scale, options.feature_transform);
+    field = std::make_unique<NearestCurvePoint>(guardPolylines(image, curves), image.width,
+                                                std::max(image.height, 1), options.field_grid_scale,
+                                                options.nearest_point_method);
     guard = std::make_unique<SkeletonGuard>(*field, options.skeleton_offset_mm * px_per_mm);
   }
   const Context context{spec, px_per_mm, guard.get()};

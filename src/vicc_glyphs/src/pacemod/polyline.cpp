@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace vicc_glyphs {
 namespace pacemod {
@@ -50,18 +51,28 @@ double squaredSegmentDistance(const Point2& point, const Point2& a, const Point2
 
 }  // namespace
 
-PolylineDistance::PolylineDistance(const Polyline& line, double cell) : line_(line), cell_(cell) {
+PolylineSetDistance::PolylineSetDistance(std::vector<const Polyline*> lines, double cell)
+    : lines_(std::move(lines)), cell_(cell) {
   if (!(cell > 0.0) || !std::isfinite(cell)) {
     throw std::invalid_argument("PolylineDistance: the cell size must be a finite number > 0");
   }
+  const auto finite = [&](const Polyline& line, int i) {
+    return line[i].allFinite() && line[i + 1].allFinite();
+  };
+  // Calls visit(line, segment) for every segment with finite ends, last line and segment first.
+  const auto forEachSegmentBackwards = [&](auto&& visit) {
+    for (int l = static_cast<int>(lines_.size()) - 1; l >= 0; --l) {
+      const Polyline& line = *lines_[l];
+      for (int i = static_cast<int>(line.size()) - 2; i >= 0; --i) {
+        if (finite(line, i)) visit(line, Segment{l, i});
+      }
+    }
+  };
   Point2 lo = Point2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  const auto finite = [&](int i) { return line[i].allFinite() && line[i + 1].allFinite(); };
-  const int segments = static_cast<int>(line.size()) - 1;
-  for (int i = 0; i < segments; ++i) {
-    if (!finite(i)) continue;
-    lo = lo.cwiseMin(line[i].cwiseMin(line[i + 1]));
-    hi = hi.cwiseMax(line[i].cwiseMax(line[i + 1]));
-  }
+  forEachSegmentBackwards([&](const Polyline& line, const Segment& s) {
+    lo = lo.cwiseMin(line[s.segment].cwiseMin(line[s.segment + 1]));
+    hi = hi.cwiseMax(line[s.segment].cwiseMax(line[s.segment + 1]));
+  });
   if (!(lo.x() <= hi.x())) return;  // no finite segment
   // A coarser grid finds the same nearest points; only the segments tried per query grow.
   const auto cells = [&](double size) {
@@ -74,9 +85,9 @@ PolylineDistance::PolylineDistance(const Polyline& line, double cell) : line_(li
   max_x_ = static_cast<long long>(std::floor(hi.x() / cell_));
   max_y_ = static_cast<long long>(std::floor(hi.y() / cell_));
   const long long width = max_x_ - min_x_ + 1;
-  // Segment indices per cell, row-major (a counting sort: cell c holds
-  // segments_[start_[c]] ... segments_[start_[c + 1] - 1]).
-  const auto forEachCell = [&](int i, auto&& visit) {
+  // The segments per cell, row-major (a counting sort: cell c holds
+  // entries_[start_[c]] ... entries_[start_[c + 1] - 1]).
+  const auto forEachCell = [&](const Polyline& line, int i, auto&& visit) {
     const Point2 a = line[i].cwiseMin(line[i + 1]) / cell_,
                  b = line[i].cwiseMax(line[i + 1]) / cell_;
     for (long long y = std::floor(a.y()); y <= static_cast<long long>(std::floor(b.y())); ++y) {
@@ -86,60 +97,63 @@ PolylineDistance::PolylineDistance(const Polyline& line, double cell) : line_(li
     }
   };
   start_.assign(static_cast<std::size_t>(width * (max_y_ - min_y_ + 1)) + 1, 0);
-  for (int i = 0; i < segments; ++i) {
-    if (finite(i)) forEachCell(i, [&](long long c) { ++start_[c]; });
-  }
+  forEachSegmentBackwards([&](const Polyline& line, const Segment& s) {
+    forEachCell(line, s.segment, [&](long long c) { ++start_[c]; });
+  });
   for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
-  segments_.resize(start_.back());
-  for (int i = segments - 1; i >= 0; --i) {  // backwards: each cell keeps increasing indices
-    if (finite(i)) forEachCell(i, [&](long long c) { segments_[--start_[c]] = i; });
-  }
+  entries_.resize(start_.back());
+  // Filled backwards: each cell keeps its segments in increasing (line, segment) order.
+  forEachSegmentBackwards([&](const Polyline& line, const Segment& s) {
+    const Entry entry{line[s.segment], line[s.segment + 1], s};
+    forEachCell(line, s.segment, [&](long long c) { entries_[--start_[c]] = entry; });
+  });
 }
 
-double PolylineDistance::operator()(const Point2& point) const {
-  if (segments_.empty()) return distanceToPolyline(point, line_);
-  const int segment = nearestSegment(point);
-  if (segment < 0) return std::numeric_limits<double>::infinity();
-  return std::sqrt(squaredSegmentDistance(point, line_[segment], line_[segment + 1]));
+Point2 PolylineSetDistance::nearestOn(const Segment& s, const Point2& point) const {
+  const Polyline& line = *lines_[s.line];
+  return nearestOnSegment(point, line[s.segment], line[s.segment + 1]);
 }
 
-Point2 PolylineDistance::nearest(const Point2& point, int* segment_index) const {
-  const int segment = segments_.empty() ? -1 : nearestSegment(point);
-  if (segment_index) *segment_index = segment;
-  if (segment < 0) {
-    return line_.size() == 1 && point.allFinite() ? line_.front() : Point2::Constant(NAN);
-  }
-  return nearestOnSegment(point, line_[segment], line_[segment + 1]);
-}
-
-int PolylineDistance::nearestSegment(const Point2& point) const {
+PolylineSetDistance::Segment PolylineSetDistance::nearestSegment(const Point2& point,
+                                                                 double radius) const {
+  if (entries_.empty() || !(radius > 0.0)) return {};
   const Point2 at = point / cell_;
-  if (!at.allFinite()) return -1;
-  if (at.cwiseAbs().maxCoeff() > kFarCells) return nearestSegmentScanned(point);
+  if (!at.allFinite()) return {};
+  if (at.cwiseAbs().maxCoeff() > kFarCells) return nearestScanned(point, radius);
   const long long cx = std::floor(at.x()), cy = std::floor(at.y());
   // Rings nearer than the grid hold none of its cells, rings beyond this one none either.
   const long long first_ring = std::max({0LL, min_x_ - cx, cx - max_x_, min_y_ - cy, cy - max_y_});
   const long long last_ring = std::max(
       {std::abs(cx - min_x_), std::abs(cx - max_x_), std::abs(cy - min_y_), std::abs(cy - max_y_)});
   const long long width = max_x_ - min_x_ + 1;
-  double best = std::numeric_limits<double>::infinity();
-  int best_segment = -1;
-  const auto visit = [&](long long x, long long y) {
+  double best = radius * radius;
+  Segment best_segment;
+  // Squared distance from the point to column (row) x of cells, 0 for its own.
+  const auto gap2 = [&](long long cell_index, double coordinate) {
+    const double gap =
+        std::max({0.0, cell_index * cell_ - coordinate, coordinate - (cell_index + 1) * cell_});
+    return gap * gap;
+  };
+  // A cell nearer than the best so far (none of its segments can be nearer otherwise).
+  const auto visit = [&](long long x, long long y, double gap2_x) {
     const long long c = (y - min_y_) * width + (x - min_x_);
+    if (start_[c] == start_[c + 1] || gap2_x + gap2(y, point.y()) >= best) return;
     for (int k = start_[c]; k < start_[c + 1]; ++k) {
-      const int i = segments_[k];
-      const double distance2 = squaredSegmentDistance(point, line_[i], line_[i + 1]);
-      if (distance2 < best) best = distance2, best_segment = i;
+      const Entry& entry = entries_[k];
+      const double distance2 = squaredSegmentDistance(point, entry.a, entry.b);
+      if (distance2 < best) best = distance2, best_segment = entry.segment;
     }
   };
   for (long long r = first_ring; r <= last_ring; ++r) {
     const long long y0 = std::max(cy - r, min_y_), y1 = std::min(cy + r, max_y_);
     for (long long x = std::max(cx - r, min_x_); x <= std::min(cx + r, max_x_); ++x) {
+      const double gap2_x = gap2(x, point.x());
+      if (gap2_x >= best) continue;
       if (x == cx - r || x == cx + r) {  // the ring's whole column
-        for (long long y = y0; y <= y1; ++y) visit(x, y);
+        for (long long y = y0; y <= y1; ++y) visit(x, y, gap2_x);
       } else {  // its two cells in this column
-        if (cy - r >= min_y_) visit(x, cy - r);
-        if (r > 0 && cy + r <= max_y_) visit(x, cy + r);
+        if (cy - r >= min_y_) visit(x, cy - r, gap2_x);
+        if (r > 0 && cy + r <= max_y_) visit(x, cy + r, gap2_x);
       }
     }
     // Any cell of ring r + 1 is at least r cells away from the point.
@@ -148,14 +162,38 @@ int PolylineDistance::nearestSegment(const Point2& point) const {
   return best_segment;
 }
 
-int PolylineDistance::nearestSegmentScanned(const Point2& point) const {
-  double best = std::numeric_limits<double>::infinity();
-  int best_segment = -1;
-  for (int i = 0; i + 1 < static_cast<int>(line_.size()); ++i) {
-    const double distance2 = squaredSegmentDistance(point, line_[i], line_[i + 1]);
-    if (distance2 < best) best = distance2, best_segment = i;
+PolylineSetDistance::Segment PolylineSetDistance::nearestScanned(const Point2& point,
+                                                                 double radius) const {
+  double best = radius * radius;
+  Segment best_segment;
+  for (int l = 0; l < static_cast<int>(lines_.size()); ++l) {
+    for (int i = 0; i + 1 < static_cast<int>(lines_[l]->size()); ++i) {
+      const double distance2 = squaredSegmentDistance(point, (*lines_[l])[i], (*lines_[l])[i + 1]);
+      if (distance2 < best) best = distance2, best_segment = {l, i};
+    }
   }
   return best_segment;
+}
+
+PolylineDistance::PolylineDistance(const Polyline& line, double cell)
+    : line_(line), segments_({&line}, cell) {}
+
+double PolylineDistance::operator()(const Point2& point) const {
+  if (segments_.empty()) return distanceToPolyline(point, line_);
+  const PolylineSetDistance::Segment segment = segments_.nearestSegment(point);
+  if (segment.line < 0) return std::numeric_limits<double>::infinity();
+  return std::sqrt(
+      squaredSegmentDistance(point, line_[segment.segment], line_[segment.segment + 1]));
+}
+
+Point2 PolylineDistance::nearest(const Point2& point, int* segment_index) const {
+  const PolylineSetDistance::Segment segment =
+      segments_.empty() ? PolylineSetDistance::Segment{} : segments_.nearestSegment(point);
+  if (segment_index) *segment_index = segment.segment;
+  if (segment.line < 0) {
+    return line_.size() == 1 && point.allFinite() ? line_.front() : Point2::Constant(NAN);
+  }
+  return segments_.nearestOn(segment, point);
 }
 
 double polylineArea(const Polyline& line) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace vicc_glyphs {
 namespace pacemod {
@@ -41,9 +42,9 @@ GuardResult SkeletonGuard::limit(const Point2& knot, const Point2& direction, do
   while (result.amplitude > 0.0 && result.steps < kMaxGuardSteps) {
     const double tolerance = std::min(field_.gridPixel(), kGuardSlack * result.amplitude);
     const Point2 moved = knot + (result.amplitude / growth) * direction;
-    const Point2 other = field_.nearest(moved);
-    if ((moved - other).norm() >= result.amplitude - tolerance) break;
-    const double skeleton = growth * skeletonTranslation(knot, direction, other, growth);
+    const std::optional<Point2> other = field_.nearestWithin(moved, result.amplitude - tolerance);
+    if (!other) break;
+    const double skeleton = growth * skeletonTranslation(knot, direction, *other, growth);
     if (!std::isfinite(skeleton)) break;
     result.amplitude = std::clamp(skeleton - epsilon_, 0.0, result.amplitude);
     if (result.amplitude < kNegligibleAmplitude) result.amplitude = 0.0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <random>
 
 #include "vicc_glyphs/pacemod/nearest_curve_point.hpp"
@@ -59,7 +60,8 @@ TEST(FeatureTransformTest, EmptyMaskHasNoFeatures) {
 
 TEST(FeatureTransformTest, NearestCurvePointReturnsExactSamplesOfTheCurves) {
   const std::vector<std::vector<Point2>> lines{{{10, 10}, {90, 10}}, {{10, 30}, {90, 30}}};
-  for (FeatureTransform method : {FeatureTransform::Maurer, FeatureTransform::OpenCvLabels}) {
+  for (NearestPointMethod method : {NearestPointMethod::ExactSegments, NearestPointMethod::Maurer,
+                                    NearestPointMethod::OpenCvLabels}) {
     const NearestCurvePoint field(lines, 100, 40, 2.0, method);
     const Point2 a = field.nearest({50.2, 14.0});
     EXPECT_NEAR(a.y(), 10.0, 1e-12);
@@ -68,6 +70,50 @@ TEST(FeatureTransformTest, NearestCurvePointReturnsExactSamplesOfTheCurves) {
     EXPECT_NEAR(field.nearest({1e9, -1e9}).y(), 10.0, 1e-12);  // clamped onto the grid
   }
   EXPECT_THROW(NearestCurvePoint({}, 10, 10), std::invalid_argument);
+}
+
+// nearestWithin answers exactly when nearest() lies within the radius, for every method; the
+// bucketed segments give the exact nearest point of the polylines, the transforms one of their
+// samples within a grid pixel of it.
+TEST(FeatureTransformTest, NearestWithinARadiusAgreesWithNearest) {
+  std::vector<std::vector<Point2>> lines{{}, {}};
+  for (int i = 0; i <= 200; ++i) {
+    const double angle = 2 * M_PI * i / 200;
+    lines[0].push_back({60 + 30 * std::cos(angle), 50 + 20 * std::sin(angle)});
+    lines[1].push_back({20 + 0.3 * i, 90 + 5 * std::sin(0.2 * i)});
+  }
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> x(0, 120), y(0, 110), radius(0.2, 15);
+  for (NearestPointMethod method : {NearestPointMethod::ExactSegments, NearestPointMethod::Maurer,
+                                    NearestPointMethod::OpenCvLabels}) {
+    const NearestCurvePoint field(lines, 120, 110, 1.0, method);
+    for (int k = 0; k < 500; ++k) {
+      const Point2 q(x(random), y(random));
+      const double exact =
+          std::min(distanceToPolyline(q, lines[0]), distanceToPolyline(q, lines[1]));
+      const Point2 nearest = field.nearest(q);
+      const double found = (nearest - q).norm();
+      if (method == NearestPointMethod::ExactSegments) {
+        EXPECT_NEAR(found, exact, 1e-9) << q.transpose();
+      } else {
+        EXPECT_LT(found, exact + (method == NearestPointMethod::Maurer ? 1.0 : 4.5))
+            << q.transpose();
+      }
+      const double r = radius(random);
+      const std::optional<Point2> within = field.nearestWithin(q, r);
+      EXPECT_EQ(within.has_value(), found < r) << q.transpose() << " radius " << r;
+      if (within) {
+        EXPECT_NEAR((*within - nearest).norm(), 0.0, 1e-12);
+      }
+    }
+  }
+  // A curve only outside the frame (and its margin) leaves nothing to modify, for every method.
+  for (NearestPointMethod method :
+       {NearestPointMethod::ExactSegments, NearestPointMethod::Maurer}) {
+    EXPECT_THROW(NearestCurvePoint({{{-30, -30}, {-20, -30}}}, 50, 50, 1.0, method),
+                 std::invalid_argument);
+    EXPECT_NO_THROW(NearestCurvePoint({{{-30, 10}, {20, 10}}}, 50, 50, 1.0, method));
+  }
 }
 
 // A pixel's feature is the sample nearest to the pixel's centre: for (50.5, 25.2) in pixel row

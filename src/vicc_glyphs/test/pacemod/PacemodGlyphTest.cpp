@@ -121,6 +121,34 @@ TEST(PacemodGlyphTest, SubPixelStepsOfAnIconLeaveNoSpike) {
   }
 }
 
+// The skeleton guard looks for other curve points in front of a knot point on the contour as
+// its waves are built, without its sub-pixel teeth. On the curve with its teeth (and with 16
+// chords per Bezier segment) the 0.2 px step of this square's top side lay up to 0.1 px in front
+// of the knot points beside it, nearer than the guard's slack at a 1 px amplitude (5 %), and
+// cut them to 0.
+TEST(PacemodGlyphTest, KnotPointsBesideASubPixelStepKeepTheirAmplitude) {
+  DiffusionCurveImage image;
+  image.width = image.height = 240;
+  DiffusionCurve square;
+  square.control_points = test::closedStraightChain(
+      {{20, 20}, {120, 20}, {120, 20.2}, {220, 20.2}, {220, 220}, {20, 220}});
+  image.curves = {square};
+  // 240 mm across: 1 px per mm, so waves of 1 px, 10 px long.
+  for (const Waveform waveform : {Waveform::Sine, Waveform::Triangle, Waveform::Rectangle}) {
+    DiffusionCurveImage waved = image;
+    const std::vector<CurveWaveReport> reports =
+        applyWaves(waved, {0}, {waveform, 0.1, 1.0}, 240.0);
+    ASSERT_EQ(reports.size(), 1u);
+    EXPECT_GT(reports[0].knot_points, 150);
+    for (const PeakReduction& reduction : reports[0].reductions) {
+      // The top side runs from arc length 0 to 200 px; its two corners excepted.
+      EXPECT_FALSE(reduction.arc_length_mm > 15.0 && reduction.arc_length_mm < 185.0)
+          << waveformName(waveform) << ": " << reduction.reason << " at " << reduction.arc_length_mm
+          << " px to " << reduction.allowed_mm;
+    }
+  }
+}
+
 // The pine tree's concave branch corners (sine, 2 waves/10 mm, 0.4 mm): a peak knot point lies
 // just past the stretch its corner swallows, inside the stretch the offset fit spreads. Held at
 // its own offset point, the curve bulged to 4.55 px for 4.10; left to the spread, every lobe is

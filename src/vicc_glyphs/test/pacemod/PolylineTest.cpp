@@ -2,10 +2,12 @@
 // distance.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <vector>
 
 #include "vicc_glyphs/pacemod/polyline.hpp"
 
@@ -65,6 +67,46 @@ TEST(PolylineTest, BucketedDistanceCopesWithTinyCellsAndFarQueries) {
   for (double cell : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
     EXPECT_THROW(PolylineDistance(line, cell), std::invalid_argument) << cell;
   }
+}
+
+// Several polylines at once (the skeleton guard's curves): the nearest point over all of them,
+// and with a radius only a point nearer than it.
+TEST(PolylineTest, NearestOfSeveralPolylinesEqualsTheExhaustiveOneWithinARadius) {
+  std::vector<Polyline> lines;
+  for (int ring = 0; ring < 3; ++ring) {  // three wavy rings inside each other, one open
+    Polyline line;
+    for (int i = 0; i <= 300 - 40 * ring; ++i) {
+      const double angle = 2 * M_PI * i / 300;
+      const double radius = 40 + 25 * ring + 4 * std::sin((7 + ring) * angle);
+      line.push_back(Point2(150 + radius * std::cos(angle), 140 + radius * std::sin(angle)));
+    }
+    lines.push_back(line);
+  }
+  const PolylineSetDistance set({&lines[0], &lines[1], &lines[2]}, 8.0);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> coordinate(-50, 350), radius(0.5, 30.0);
+  for (int k = 0; k < 2000; ++k) {
+    const Point2 p(coordinate(random), coordinate(random));
+    double exact = std::numeric_limits<double>::infinity();
+    for (const Polyline& line : lines) exact = std::min(exact, distanceToPolyline(p, line));
+    const PolylineSetDistance::Segment nearest = set.nearestSegment(p);
+    ASSERT_GE(nearest.line, 0) << p.transpose();
+    const Point2 point = set.nearestOn(nearest, p);
+    EXPECT_NEAR((point - p).norm(), exact, 1e-9) << p.transpose();
+    const Polyline& line = lines[nearest.line];  // the point lies on the segment named
+    EXPECT_NEAR(distanceToPolyline(point, {line[nearest.segment], line[nearest.segment + 1]}), 0.0,
+                1e-9);
+    const double r = radius(random);
+    const PolylineSetDistance::Segment within = set.nearestSegment(p, r);
+    EXPECT_EQ(within.line >= 0, exact < r) << p.transpose() << " radius " << r;
+    if (within.line >= 0) {
+      EXPECT_NEAR((set.nearestOn(within, p) - p).norm(), exact, 1e-9);
+    }
+  }
+  EXPECT_LT(set.nearestSegment(Point2(NAN, 3)).line, 0);
+  EXPECT_LT(set.nearestSegment(lines[1][5], 0.0).line, 0);  // nothing is nearer than 0
+  EXPECT_GE(set.nearestSegment(lines[1][5], 1e-9).line, 0);
+  EXPECT_TRUE(PolylineSetDistance({}).empty());
 }
 
 // Arc lengths on a closed contour of length 10: the shorter way round, across 0 = L as well.

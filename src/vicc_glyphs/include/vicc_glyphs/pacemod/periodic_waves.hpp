@@ -33,8 +33,10 @@ struct WaveOptions {
   /// Free space epsilon kept to the skeleton, in mm (0.3 mm = Fig. 6.14's 3 px at 512 px for a
   /// 50 mm glyph).
   double skeleton_offset_mm = 0.3;
-  double field_grid_scale = 1.0;  ///< feature-transform grid pixels per image pixel
-  FeatureTransform feature_transform = FeatureTransform::Maurer;
+  /// Grid pixels per image pixel of the transforms' grid (NearestCurvePoint); its pixel is the
+  /// skeleton guard's largest slack.
+  double field_grid_scale = 1.0;
+  NearestPointMethod nearest_point_method = NearestPointMethod::ExactSegments;
 };
 
 /// A knot point whose translation was shortened.

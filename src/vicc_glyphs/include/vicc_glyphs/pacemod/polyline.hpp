@@ -2,6 +2,7 @@
 // Polylines of diffusion curves, for the distance field, the amplitude measurement and the
 // intersection checks.
 
+#include <limits>
 #include <vector>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
@@ -17,10 +18,50 @@ Polyline sampleCurve(const DiffusionCurve& curve, int per_segment = 16);
 /// Euclidean distance from `point` to the nearest point of `line` (+inf for an empty line).
 double distanceToPolyline(const Point2& point, const Polyline& line);
 
-/// distanceToPolyline for many points against one polyline: its segments in grid cells of
+/// Nearest points of a set of polylines for many queries: their segments in grid cells of
 /// `cell` pixels (coarser when that would take over 4 M cells), each query searching rings of
-/// cells outward until no nearer segment can be left. Throws std::invalid_argument for a cell
-/// that is not a finite number > 0. `line` must outlive it.
+/// cells outward until no nearer segment can be left, or none nearer than a given radius.
+/// Throws std::invalid_argument for a cell that is not a finite number > 0. The polylines must
+/// outlive it.
+class PolylineSetDistance {
+ public:
+  struct Segment {
+    int line = -1;  ///< index into the polylines; -1: none
+    int segment = -1;
+  };
+
+  explicit PolylineSetDistance(std::vector<const Polyline*> lines, double cell = 4.0);
+
+  /// Whether no polyline has a segment with finite ends (every query then finds none).
+  bool empty() const { return entries_.empty(); }
+  /// The segment nearest to `point` among those nearer than `radius` (ties: the first in the
+  /// order of lines and segments within a cell); none for a non-finite point.
+  Segment nearestSegment(const Point2& point,
+                         double radius = std::numeric_limits<double>::infinity()) const;
+  /// The point of `segment` nearest to `point` (a vertex exactly when it is one).
+  Point2 nearestOn(const Segment& segment, const Point2& point) const;
+
+ private:
+  /// Every segment tried: for a query too far away for cell indices.
+  Segment nearestScanned(const Point2& point, double radius) const;
+
+  /// A segment in a cell, with its end points (no lookup through the polylines per test).
+  struct Entry {
+    Point2 a, b;
+    Segment segment;
+  };
+
+  static constexpr double kMaxCells = 1 << 22;
+  static constexpr double kFarCells = 1e15;
+  std::vector<const Polyline*> lines_;
+  double cell_;
+  long long min_x_ = 0, min_y_ = 0, max_x_ = 0, max_y_ = 0;  ///< the cells the segments touch
+  std::vector<int> start_;      ///< per cell (row-major) its first entry in entries_, + end
+  std::vector<Entry> entries_;  ///< cell by cell
+};
+
+/// distanceToPolyline for many points against one polyline (a PolylineSetDistance of one line).
+/// `line` must outlive it.
 class PolylineDistance {
  public:
   explicit PolylineDistance(const Polyline& line, double cell = 4.0);
@@ -30,17 +71,8 @@ class PolylineDistance {
   Point2 nearest(const Point2& point, int* segment = nullptr) const;
 
  private:
-  int nearestSegment(const Point2& point) const;  ///< -1 when there is none
-  /// Every segment tried: for a query too far away for cell indices.
-  int nearestSegmentScanned(const Point2& point) const;
-
-  static constexpr double kMaxCells = 1 << 22;
-  static constexpr double kFarCells = 1e15;
   const Polyline& line_;
-  double cell_;
-  long long min_x_ = 0, min_y_ = 0, max_x_ = 0, max_y_ = 0;  ///< the cells the segments touch
-  std::vector<int> start_;     ///< per cell (row-major) its first entry in segments_, + end
-  std::vector<int> segments_;  ///< segment indices, cell by cell
+  PolylineSetDistance segments_;
 };
 
 /// Shoelace area of a closed polyline (positive: clockwise on screen, y down).
