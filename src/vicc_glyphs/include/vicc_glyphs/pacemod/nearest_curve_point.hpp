@@ -17,9 +17,8 @@
 #include <optional>
 #include <vector>
 
-#include "vicc_glyphs/pacemod/polyline.hpp"
-
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
+#include "vicc_glyphs/pacemod/polyline.hpp"
 
 namespace vicc_glyphs {
 namespace pacemod {
