@@ -118,6 +118,7 @@ endif()
 if(TARGET vicc_glyphs_io)
   add_executable(vicc_glyphs_feature_transform_bench bench/pacemod/feature_transform_bench.cpp)
   target_compile_options(vicc_glyphs_feature_transform_bench PRIVATE ${VICC_WARNINGS})
+  target_include_directories(vicc_glyphs_feature_transform_bench PRIVATE bench)
   target_compile_definitions(vicc_glyphs_feature_transform_bench PRIVATE
     VICC_GLYPHS_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data")
   target_link_libraries(vicc_glyphs_feature_transform_bench vicc_glyphs_pacemod vicc_glyphs_io

@@ -9,12 +9,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "bench_timing.hpp"
 #include "vicc_common/command_line.hpp"
 #include "vicc_glyphs/io/load.hpp"
 #include "vicc_glyphs/pacemod/nearest_curve_point.hpp"
@@ -25,12 +25,6 @@ using namespace vicc_glyphs;
 using namespace vicc_glyphs::pacemod;
 
 namespace {
-
-double threadMilliseconds() {
-  timespec now{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-  return now.tv_sec * 1e3 + now.tv_nsec * 1e-6;
-}
 
 struct Result {
   std::vector<double> build_ms;
@@ -59,9 +53,9 @@ std::vector<Point2> pointsNearTheCurves(const std::vector<Polyline>& lines) {
 template <class Query>
 double queryMilliseconds(const std::vector<Point2>& points, Query&& query) {
   double sum = 0.0;
-  const double start = threadMilliseconds();
+  const double start = bench::threadCpuMilliseconds();
   for (const Point2& p : points) sum += query(p).x();
-  const double elapsed = threadMilliseconds() - start;
+  const double elapsed = bench::threadCpuMilliseconds() - start;
   if (!std::isfinite(sum)) std::printf(" ");  // keeps the queries from being optimised away
   return elapsed;
 }
@@ -69,12 +63,11 @@ double queryMilliseconds(const std::vector<Point2>& points, Query&& query) {
 void measure(const std::vector<Polyline>& lines, NearestPointMethod method, Result& result) {
   std::vector<double> times;
   for (int repeat = 0; repeat < 5; ++repeat) {
-    const double start = threadMilliseconds();
+    const double start = bench::threadCpuMilliseconds();
     const NearestCurvePoint field(lines, 512, 512, 1.0, method);
-    times.push_back(threadMilliseconds() - start);
+    times.push_back(bench::threadCpuMilliseconds() - start);
   }
-  std::sort(times.begin(), times.end());
-  result.build_ms.push_back(times[2]);
+  result.build_ms.push_back(bench::median(times));
   const NearestCurvePoint field(lines, 512, 512, 1.0, method);
   std::mt19937 random(7);
   std::uniform_real_distribution<double> coordinate(0.0, 512.0);
@@ -132,17 +125,14 @@ int run(const std::vector<std::string>& args) {
       "| method | build ms (median over icons) | build ms (max) | 20000 random queries ms "
       "(median) | 20000 queries near the curves ms (median) | mean distance error px | max "
       "distance error px |\n|---|---|---|---|---|---|---|\n");
-  const auto median = [](std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-  };
   for (const auto& [name, r] :
        {std::pair<const char*, const Result&>{"bucketed segments (exact)", segments},
         std::pair<const char*, const Result&>{"OpenCV DIST_LABEL_PIXEL, mask 5", opencv},
         std::pair<const char*, const Result&>{"Maurer et al. 2003", maurer}}) {
-    std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.4f | %.3f |\n", name, median(r.build_ms),
-                *std::max_element(r.build_ms.begin(), r.build_ms.end()), median(r.random_query_ms),
-                median(r.near_query_ms), r.error_sum / r.queries, r.error_max);
+    std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.4f | %.3f |\n", name,
+                bench::median(r.build_ms), bench::maximum(r.build_ms),
+                bench::median(r.random_query_ms), bench::median(r.near_query_ms),
+                r.error_sum / r.queries, r.error_max);
   }
   return 0;
 }

@@ -76,27 +76,34 @@ bool closedContour(const DiffusionCurve& curve) {
          (curve.control_points.front() - curve.control_points.back()).norm() <= 1e-6;
 }
 
-// The skeleton guard's polylines of the image's curves (`waved`: sorted indices of the curves
-// to be waved), within 0.005 px of them, far below the guard's least slack (5 % of a 1 px
-// amplitude), since its nearest points are exact on the polylines. A contour to be waved is
-// taken as its waves are built, without its sub-pixel teeth: the guard must find its knot
-// points on it, not up to a few tenths of a pixel in front of them (16 pieces per Bezier
-// segment and the curve with its teeth cut some 1 px waves to 0 that way).
-std::vector<Polyline> guardPolylines(const DiffusionCurveImage& image,
-                                     const std::vector<int>& waved) {
+// The image's curves as the waves take them: the closed contours among `waved` (sorted
+// indices) without their sub-pixel teeth, the others as they are.
+std::vector<DiffusionCurve> curvesAsWaved(const DiffusionCurveImage& image,
+                                          const std::vector<int>& waved) {
+  std::vector<DiffusionCurve> curves = image.curves;
+  for (int i : waved) {
+    if (closedContour(curves[i])) curves[i] = withoutTeeth(curves[i]);
+  }
+  return curves;
+}
+
+// The skeleton guard's polylines of `curves` (curvesAsWaved), within 0.005 px of them, far below
+// the guard's least slack (5 % of a 1 px amplitude), since its nearest points are exact on the
+// polylines. The guard must find a knot point on its own contour as waved, not up to a few
+// tenths of a pixel in front of it: 16 pieces per Bezier segment and the contours with their
+// teeth cut some 1 px waves to 0 that way.
+std::vector<Polyline> guardPolylines(const std::vector<DiffusionCurve>& curves) {
   Flattening flattening;
   flattening.tolerance = 0.005;
   flattening.max_piece_length = 8.0;
   std::vector<Polyline> lines;
-  for (int i = 0; i < static_cast<int>(image.curves.size()); ++i) {
-    const DiffusionCurve& curve = image.curves[i];
-    const bool to_wave = std::binary_search(waved.begin(), waved.end(), i) && closedContour(curve);
-    lines.push_back(flattenCurve(to_wave ? withoutTeeth(curve) : curve, nullptr, flattening));
+  for (const DiffusionCurve& curve : curves) {
+    lines.push_back(flattenCurve(curve, nullptr, flattening));
   }
   return lines;
 }
 
-// Null when the curve stays unchanged (the report says why).
+// `curve` as curvesAsWaved gives it. Null when the curve stays unchanged (the report says why).
 std::unique_ptr<WavedContour> prepare(const DiffusionCurve& curve, int index,
                                       const Context& context, CurveWaveReport& report) {
   report.curve = index;
@@ -106,7 +113,7 @@ std::unique_ptr<WavedContour> prepare(const DiffusionCurve& curve, int index,
     return nullptr;
   }
   std::unique_ptr<WavedContour> contour(new WavedContour{
-      bspline::toSplineDiffusionCurve(withoutTeeth(curve)), nullptr, nullptr, nullptr, {}, report});
+      bspline::toSplineDiffusionCurve(curve), nullptr, nullptr, nullptr, {}, report});
   contour->table = std::make_unique<bspline::ArcLengthTable>(contour->spline.geometry);
   const double length = contour->table->totalLength();
   report.arc_length_mm = length / context.px_per_mm;
@@ -348,10 +355,11 @@ std::vector<CurveWaveReport> applyWaves(DiffusionCurveImage& image,
   std::sort(curves.begin(), curves.end());
   curves.erase(std::unique(curves.begin(), curves.end()), curves.end());
   const double px_per_mm = image.width / glyph_size_mm;
+  const std::vector<DiffusionCurve> as_waved = curvesAsWaved(image, curves);
   std::unique_ptr<NearestCurvePoint> field;
   std::unique_ptr<SkeletonGuard> guard;
   if (options.prevent_self_intersection && !image.curves.empty()) {
-    field = std::make_unique<NearestCurvePoint>(guardPolylines(image, curves), image.width,
+    field = std::make_unique<NearestCurvePoint>(guardPolylines(as_waved), image.width,
                                                 std::max(image.height, 1), options.field_grid_scale,
                                                 options.nearest_point_method);
     guard = std::make_unique<SkeletonGuard>(*field, options.skeleton_offset_mm * px_per_mm);
@@ -361,7 +369,7 @@ std::vector<CurveWaveReport> applyWaves(DiffusionCurveImage& image,
   std::map<int, std::unique_ptr<WavedContour>> waved;
   for (std::size_t k = 0; k < curves.size(); ++k) {
     std::unique_ptr<WavedContour> contour =
-        prepare(image.curves[curves[k]], curves[k], context, reports[k]);
+        prepare(as_waved[curves[k]], curves[k], context, reports[k]);
     if (contour) waved[curves[k]] = std::move(contour);
   }
   std::map<int, int> left;
