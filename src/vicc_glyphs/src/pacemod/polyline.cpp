@@ -187,8 +187,7 @@ double PolylineDistance::operator()(const Point2& point) const {
 }
 
 Point2 PolylineDistance::nearest(const Point2& point, int* segment_index) const {
-  const PolylineSetDistance::Segment segment =
-      segments_.empty() ? PolylineSetDistance::Segment{} : segments_.nearestSegment(point);
+  const PolylineSetDistance::Segment segment = segments_.nearestSegment(point);
   if (segment_index) *segment_index = segment.segment;
   if (segment.line < 0) {
     return line_.size() == 1 && point.allFinite() ? line_.front() : Point2::Constant(NAN);
