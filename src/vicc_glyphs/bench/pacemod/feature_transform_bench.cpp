@@ -18,6 +18,7 @@
 #include "vicc_common/command_line.hpp"
 #include "vicc_glyphs/io/load.hpp"
 #include "vicc_glyphs/pacemod/nearest_curve_point.hpp"
+#include "vicc_glyphs/pacemod/periodic_waves.hpp"
 #include "vicc_glyphs/pacemod/polyline.hpp"
 
 namespace fs = std::filesystem;
@@ -114,8 +115,7 @@ int run(const std::vector<std::string>& args) {
   Result segments, opencv, maurer;
   for (const fs::path& icon : icons) {
     const DiffusionCurveImage image = loadDiffusionCurves(icon.string(), 512);
-    std::vector<Polyline> lines;
-    for (const DiffusionCurve& curve : image.curves) lines.push_back(sampleCurve(curve, 16));
+    const std::vector<Polyline> lines = skeletonGuardPolylines(image.curves);
     measure(lines, NearestPointMethod::ExactSegments, segments);
     measure(lines, NearestPointMethod::OpenCvLabels, opencv);
     measure(lines, NearestPointMethod::Maurer, maurer);

@@ -77,7 +77,9 @@ bool closedContour(const DiffusionCurve& curve) {
 }
 
 // The image's curves as the waves take them: the closed contours among `waved` (sorted
-// indices) without their sub-pixel teeth, the others as they are.
+// indices) without their sub-pixel teeth, the others as they are. The skeleton guard must find a
+// knot point on its own contour as waved, not up to a few tenths of a pixel in front of it: 16
+// pieces per Bezier segment and the contours with their teeth cut some 1 px waves to 0 that way.
 std::vector<DiffusionCurve> curvesAsWaved(const DiffusionCurveImage& image,
                                           const std::vector<int>& waved) {
   std::vector<DiffusionCurve> curves = image.curves;
@@ -85,22 +87,6 @@ std::vector<DiffusionCurve> curvesAsWaved(const DiffusionCurveImage& image,
     if (closedContour(curves[i])) curves[i] = withoutTeeth(curves[i]);
   }
   return curves;
-}
-
-// The skeleton guard's polylines of `curves` (curvesAsWaved), within 0.005 px of them, far below
-// the guard's least slack (5 % of a 1 px amplitude), since its nearest points are exact on the
-// polylines. The guard must find a knot point on its own contour as waved, not up to a few
-// tenths of a pixel in front of it: 16 pieces per Bezier segment and the contours with their
-// teeth cut some 1 px waves to 0 that way.
-std::vector<Polyline> guardPolylines(const std::vector<DiffusionCurve>& curves) {
-  Flattening flattening;
-  flattening.tolerance = 0.005;
-  flattening.max_piece_length = 8.0;
-  std::vector<Polyline> lines;
-  for (const DiffusionCurve& curve : curves) {
-    lines.push_back(flattenCurve(curve, nullptr, flattening));
-  }
-  return lines;
 }
 
 // `curve` as curvesAsWaved gives it. Null when the curve stays unchanged (the report says why).
@@ -347,6 +333,17 @@ DiffusionCurve wavedCurve(WavedContour& contour) {
 
 }  // namespace
 
+std::vector<Polyline> skeletonGuardPolylines(const std::vector<DiffusionCurve>& curves) {
+  Flattening flattening;
+  flattening.tolerance = 0.005;
+  flattening.max_piece_length = 8.0;
+  std::vector<Polyline> lines;
+  for (const DiffusionCurve& curve : curves) {
+    lines.push_back(flattenCurve(curve, nullptr, flattening));
+  }
+  return lines;
+}
+
 std::vector<CurveWaveReport> applyWaves(DiffusionCurveImage& image,
                                         const std::vector<int>& curves_in, const WaveSpec& spec,
                                         double glyph_size_mm, const WaveOptions& options) {
@@ -359,7 +356,7 @@ std::vector<CurveWaveReport> applyWaves(DiffusionCurveImage& image,
   std::unique_ptr<NearestCurvePoint> field;
   std::unique_ptr<SkeletonGuard> guard;
   if (options.prevent_self_intersection && !image.curves.empty()) {
-    field = std::make_unique<NearestCurvePoint>(guardPolylines(as_waved), image.width,
+    field = std::make_unique<NearestCurvePoint>(skeletonGuardPolylines(as_waved), image.width,
                                                 std::max(image.height, 1), options.field_grid_scale,
                                                 options.nearest_point_method);
     guard = std::make_unique<SkeletonGuard>(*field, options.skeleton_offset_mm * px_per_mm);

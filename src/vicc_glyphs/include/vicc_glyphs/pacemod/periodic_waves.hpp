@@ -23,6 +23,7 @@
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
 #include "vicc_glyphs/pacemod/nearest_curve_point.hpp"
+#include "vicc_glyphs/pacemod/polyline.hpp"
 #include "vicc_glyphs/pacemod/wave_spec.hpp"
 
 namespace vicc_glyphs {
@@ -79,6 +80,12 @@ struct CurveWaveReport {
   int unresolved_crossings = 0;
   std::string skipped;  ///< non-empty: why the curve was left unchanged
 };
+
+/// The skeleton guard's polylines of `curves`: each flattened within 0.005 px, far below the
+/// guard's least slack (5 % of a 1 px amplitude), since its nearest points are exact on them.
+/// applyWaves passes the contours it waves without their sub-pixel teeth (as their waves are
+/// built); the feature-transform bench measures the same polylines.
+std::vector<Polyline> skeletonGuardPolylines(const std::vector<DiffusionCurve>& curves);
 
 /// Modifies `image` in place; one report per selected curve, in increasing curve order
 /// (duplicate indices are ignored). Throws std::invalid_argument for an invalid spec (message names
