@@ -78,6 +78,7 @@ if(CATKIN_ENABLE_TESTING)
     test/pacemod/FeatureTransformTest.cpp
     test/pacemod/SkeletonGuardTest.cpp
     test/pacemod/ContourWavesTest.cpp
+    test/pacemod/ContourCornersTest.cpp
     test/pacemod/OriginalSpliceTest.cpp
     test/pacemod/ContourTeethTest.cpp
     test/pacemod/OffsetContourTest.cpp

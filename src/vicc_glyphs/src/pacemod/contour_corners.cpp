@@ -56,6 +56,68 @@ double ContourCorner::bisectorOffsetAt(double d) const {
   return sine > 0.0 ? d * half_turn_cosine / sine : d;
 }
 
+std::array<std::pair<int, int>, 3> cornerIndexRangesNear(const std::vector<ContourCorner>& corners,
+                                                         double l, double reach, double length) {
+  const int count = static_cast<int>(corners.size());
+  std::array<std::pair<int, int>, 3> ranges{};
+  // A little wider than asked, so that round-off in the callers' distances cannot lose a corner.
+  const double r = reach + 1e-9 * (std::abs(reach) + std::abs(l) + length) + 1e-12;
+  if (!(r < 0.5 * length)) {  // also for NaN
+    ranges[0] = {0, count};
+    return ranges;
+  }
+  const auto first_at_or_above = [&](double a) {
+    return static_cast<int>(std::lower_bound(corners.begin(), corners.end(), a,
+                                             [](const ContourCorner& c, double value) {
+                                               return c.arc_length < value;
+                                             }) -
+                            corners.begin());
+  };
+  const auto first_above = [&](double a) {
+    return static_cast<int>(std::upper_bound(corners.begin(), corners.end(), a,
+                                             [](double value, const ContourCorner& c) {
+                                               return value < c.arc_length;
+                                             }) -
+                            corners.begin());
+  };
+  const double low = l - r, high = l + r;
+  // Past `length` the window continues at 0, before 0 at `length`.
+  if (high >= length) ranges[0] = {0, first_above(high - length)};
+  ranges[1] = {std::max(ranges[0].second, first_at_or_above(low)), first_above(high)};
+  if (low <= 0.0) ranges[2] = {std::max(ranges[1].second, first_at_or_above(low + length)), count};
+  ranges[1].second = std::max(ranges[1].first, ranges[1].second);
+  return ranges;
+}
+
+std::vector<int> nearestCorners(const std::vector<ContourCorner>& corners,
+                                const std::vector<double>& arc_lengths, double length) {
+  std::vector<int> nearest(arc_lengths.size(), -1);
+  const int count = static_cast<int>(corners.size());
+  int above = 0;  // the first corner at or above l: by increasing l it only moves forward
+  for (std::size_t i = 0; i < arc_lengths.size() && count > 0; ++i) {
+    const double l = arc_lengths[i];
+    if (i > 0 && l < arc_lengths[i - 1]) above = 0;
+    while (above < count && corners[above].arc_length < l) ++above;
+    const bool closing_at_end = corners.front().arc_length == 0.0 && l > 0.5 * length;
+    // The nearest is that one or the first of those at the arc length just below l; or the
+    // closing corner counted at `length`. Ties go to the lowest index, as in a scan of all.
+    int below = above - 1;
+    while (below > 0 && corners[below - 1].arc_length == corners[below].arc_length) --below;
+    int best = -1;
+    double best_distance = 0.0;
+    for (int c : {closing_at_end ? 0 : -1, below, above}) {
+      if (c < 0 || c >= count || c == best) continue;
+      const double d = std::abs(l - (c == 0 && closing_at_end ? length : corners[c].arc_length));
+      if (best < 0 || d < best_distance) {
+        best = c;
+        best_distance = d;
+      }
+    }
+    nearest[i] = best;
+  }
+  return nearest;
+}
+
 Point2 outwardNormalOf(const Point2& d, double area) {
   const Point2 left = Point2(d.y(), -d.x()).normalized();
   return area > 0.0 ? left : Point2(-left);

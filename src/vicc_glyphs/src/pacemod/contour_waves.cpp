@@ -173,7 +173,9 @@ PeakCorner cornerOfPeak(const ContourFrame& frame, std::size_t i, double amplitu
   const bool to_miter = isStripWaveform(frame.layout.waveform);
   PeakCorner best;
   double best_distance = 0.0;
-  for (std::size_t c = 0; c < frame.corners.size(); ++c) {
+  // Beyond the larger of these no corner can take the knot point (see `moves` and `shifts`).
+  const double reach = std::max(kSameArcLength, maxSwallowtail(amplitude));
+  forEachCornerNear(frame.corners, l, reach, frame.layout.length, [&](int c) {
     const ContourCorner& corner = frame.corners[c];
     double at = corner.arc_length;
     if (at == 0.0 && l > 0.5 * frame.layout.length) at = frame.layout.length;
@@ -189,10 +191,10 @@ PeakCorner cornerOfPeak(const ContourFrame& frame, std::size_t i, double amplitu
     const bool shifts = distance < swallowtail && swallowtail - distance < 2.0 * room;
     if ((moves || (to_miter && next_to && shifts)) &&
         (best.corner < 0 || distance < best_distance)) {
-      best = {static_cast<int>(c), moves, at};
+      best = {c, moves, at};
       best_distance = distance;
     }
-  }
+  });
   return best;
 }
 
@@ -261,13 +263,14 @@ GuardedPlacement placeOnCornerOrOwn(const ContourFrame& frame, std::size_t i, do
 double bisectorCap(const ContourFrame& frame, double l, double w, double epsilon) {
   const double end = frame.layout.length;
   double cap = std::numeric_limits<double>::infinity();
-  for (const ContourCorner& corner : frame.corners) {
+  forEachCornerNear(frame.corners, l, maxSwallowtail(w), end, [&](int c) {
+    const ContourCorner& corner = frame.corners[c];
     const double swallowtail = corner.swallowtail(w);
-    if (swallowtail <= 0.0) continue;
+    if (swallowtail <= 0.0) return;
     const double d = cyclicDistance(l, corner.arc_length, end);  // the closing corner: 0 and L
-    if (d >= swallowtail) continue;
+    if (d >= swallowtail) return;
     cap = std::min(cap, std::max(0.0, corner.bisectorOffsetAt(d) - epsilon));
-  }
+  });
   return cap;
 }
 
@@ -576,15 +579,16 @@ BSplineCurve stripWave(const ContourFrame& frame, const OffsetFrame& offsets,
     breaks.push_back({wave.parameters[i], appliedOffset(wave, i), targetOf(wave, i), own});
     if (i + 1 == count) break;
     const double l0 = wave.parameters[i], l1 = wave.parameters[i + 1];
-    for (std::size_t c = 0; c < frame.corners.size(); ++c) {
-      const ContourCorner& corner = frame.corners[c];
-      if (occupied(wave, c) || corner.arc_length <= l0 + kSameArcLength ||
-          corner.arc_length >= l1 - kSameArcLength) {
-        continue;
-      }
-      const double w = waveOffsetAt(wave, corner.arc_length);
-      breaks.push_back({corner.arc_length, w, corner.offsetPoint(w), &corner});
-    }
+    forEachCornerNear(frame.corners, 0.5 * (l0 + l1), 0.5 * (l1 - l0), wave.layout.length,
+                      [&](int c) {
+                        const ContourCorner& corner = frame.corners[c];
+                        if (occupied(wave, c) || corner.arc_length <= l0 + kSameArcLength ||
+                            corner.arc_length >= l1 - kSameArcLength) {
+                          return;
+                        }
+                        const double w = waveOffsetAt(wave, corner.arc_length);
+                        breaks.push_back({corner.arc_length, w, corner.offsetPoint(w), &corner});
+                      });
   }
   std::vector<double> knots(4, 0.0);
   std::vector<Point2> points{breaks.front().point};

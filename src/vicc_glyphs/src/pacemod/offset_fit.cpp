@@ -51,27 +51,26 @@ OffsetFit::OffsetFit(const bspline::BSplineCurve& original, const bspline::ArcLe
   lengths.push_back(knots_.back());
   const double end = knots_.back();
   const std::vector<ContourSample> on_contour = frame_.samples(lengths);
+  // Per corner the room on its side before and after it (the closing corner's before is at L).
+  std::vector<std::pair<double, double>> room;
+  for (const ContourCorner& corner : corners_) {
+    const double at = corner.arc_length;
+    room.push_back(
+        {kRoomFraction * knotGap(at == 0.0 ? end : at, -1), kRoomFraction * knotGap(at, 1)});
+  }
+  const std::vector<int> nearest = nearestCorners(corners_, lengths, end);
   samples_.reserve(lengths.size());
   for (std::size_t i = 0; i < lengths.size(); ++i) {
     const double l = lengths[i];
-    Sample sample{l, on_contour[i].point, on_contour[i].normal, -1, 0, 0.0};
-    double nearest = 0.0;
-    for (std::size_t c = 0; c < corners_.size(); ++c) {
+    Sample sample{l, on_contour[i].point, on_contour[i].normal, nearest[i], 0, 0.0};
+    if (sample.corner >= 0) {
       // The closing corner (at 0) is also the one at L.
-      const double at =
-          corners_[c].arc_length == 0.0 && l > 0.5 * end ? end : corners_[c].arc_length;
-      const double distance = std::abs(l - at);
-      if (sample.corner < 0 || distance < nearest) {
-        sample.corner = static_cast<int>(c);
-        nearest = distance;
-        sample.side = distance < kOnCorner ? 0 : (l < at ? -1 : 1);
+      const double arc_length = corners_[sample.corner].arc_length;
+      const double at = arc_length == 0.0 && l > 0.5 * end ? end : arc_length;
+      sample.side = std::abs(l - at) < kOnCorner ? 0 : (l < at ? -1 : 1);
+      if (sample.side != 0) {
+        sample.room = sample.side < 0 ? room[sample.corner].first : room[sample.corner].second;
       }
-    }
-    if (sample.corner >= 0 && sample.side != 0) {
-      const double at = sample.side < 0 && corners_[sample.corner].arc_length == 0.0
-                            ? end
-                            : corners_[sample.corner].arc_length;
-      sample.room = kRoomFraction * knotGap(at, sample.side);
     }
     samples_.push_back(sample);
   }

@@ -8,6 +8,9 @@
 //   the two offset lines up to their meeting point on the bisector, corner + w / cos(turn / 2)
 //   (the miter), and the offset points of either side past the bisector do not belong to it.
 
+#include <array>
+#include <cmath>
+#include <utility>
 #include <vector>
 
 #include "vicc_glyphs/bspline/arc_length.hpp"
@@ -70,6 +73,33 @@ struct ContourCorner {
 /// orientation of the normals: positive = clockwise on screen).
 std::vector<ContourCorner> contourCorners(const bspline::BSplineCurve& contour,
                                           const bspline::ArcLengthTable& table, double area);
+
+/// An upper bound of ContourCorner::swallowtail(w) for every corner (the miter cap bounds
+/// tan(turn / 2)).
+inline double maxSwallowtail(double w) { return kMaxMiterLength * std::abs(w); }
+
+/// Index ranges [first, second), in increasing order and disjoint, that forEachCornerNear visits.
+std::array<std::pair<int, int>, 3> cornerIndexRangesNear(const std::vector<ContourCorner>& corners,
+                                                         double l, double reach, double length);
+
+/// Calls visit(index), by increasing index, for every corner of `corners` (contourCorners' order,
+/// arc lengths in [0, length)) whose cyclic arc-length distance to `l` is at most `reach`, and for
+/// a few that lie a hair farther: callers apply their own exact test. Knot points and fit samples
+/// look only at the corners near them this way, not at all of a contour's corners (an icon with
+/// dozens of corners and thousands of knot points spent millions of instructions on the others).
+template <class Visit>
+void forEachCornerNear(const std::vector<ContourCorner>& corners, double l, double reach,
+                       double length, Visit&& visit) {
+  for (const auto& range : cornerIndexRangesNear(corners, l, reach, length)) {
+    for (int c = range.first; c < range.second; ++c) visit(c);
+  }
+}
+
+/// Per arc length l of `arc_lengths` (fastest by increasing l) the corner nearest to it by
+/// |l - arc length|, the closing corner (at 0) counted at `length` when l lies past the middle;
+/// the lowest index among equally near ones; -1 without corners.
+std::vector<int> nearestCorners(const std::vector<ContourCorner>& corners,
+                                const std::vector<double>& arc_lengths, double length);
 
 /// Outward unit normal for the tangent `d` of a contour with signed area `area`.
 Point2 outwardNormalOf(const Point2& d, double area);
