@@ -21,9 +21,6 @@ namespace {
 
 constexpr double kMinQuarterPeriodPx = 0.5;
 constexpr double kNoCap = 1e300;
-// Bucket size of the crossing search, px: high-frequency waves put hundreds of their dense
-// samples into an 8 px cell, and each bucket's pairs are tested.
-constexpr double kCrossingCellPx = 2.0;
 
 // A curve being waved: its spline form, arc-length table, current wave and amplitude caps.
 struct WavedContour {
@@ -211,7 +208,7 @@ class InheritedCrossings {
       for (const DiffusionCurve& curve : image.curves) {
         lines.push_back(ContourPolygons::polygonOf(curve, sampling));
       }
-      for (const Crossing& crossing : finder.find(lines, kCrossingCellPx)) {
+      for (const Crossing& crossing : finder.find(lines)) {
         points_[{crossing.a.line, crossing.b.line}].push_back(crossingPoint(lines, crossing));
       }
     }
@@ -249,7 +246,7 @@ RoundOutcome capAtCrossings(ContourPolygons& polygons, const DiffusionCurveImage
   RoundOutcome outcome;
   const std::vector<Polyline>& lines = polygons.lines();
   const int last_round = kMaxRepairRounds + kMaxFlatteningRounds;
-  for (const Crossing& crossing : finder.find(lines, kCrossingCellPx)) {
+  for (const Crossing& crossing : finder.find(lines)) {
     if (!inherited) inherited.emplace(image, finder);  // at the first crossing: most have none
     if (inherited->contains(lines, crossing)) continue;
     ++outcome.crossings;
