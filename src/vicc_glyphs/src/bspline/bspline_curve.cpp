@@ -255,13 +255,13 @@ std::vector<Point2> BSplineCurve::sampleSpans(int per_span, std::vector<double>&
   parameters.reserve(points.capacity());
   int span = degree_;
   for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+    const std::size_t first = parameters.size();
     for (int k = 0; k < per_span; ++k) {
-      const double u = breaks[i] + (breaks[i + 1] - breaks[i]) * k / per_span;
-      parameters.push_back(u);
-      const double v = clampToDomain(u);  // round-off on the last piece may pass the end
-      span = nextSpan(v, span);
-      points.push_back(evaluateOn(v, span, 0));
+      parameters.push_back(breaks[i] + (breaks[i + 1] - breaks[i]) * k / per_span);
     }
+    // The piece's points by pointsOnSpan: many per piece in its Bezier form.
+    span = nextSpan(clampToDomain(parameters[first]), span);
+    pointsOnSpan(parameters, first, span, points);
   }
   parameters.push_back(breaks.back());
   points.push_back(pointAt(breaks.back()));

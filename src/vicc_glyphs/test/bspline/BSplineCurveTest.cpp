@@ -34,6 +34,14 @@ TEST(BSplineCurveTest, SpanSamplesArePointAtOfEachPieceInOrder) {
     EXPECT_EQ(points[i], curve.pointAt(parameters[i])) << i;  // the same arithmetic
   }
   EXPECT_THROW(curve.sampleSpans(0, parameters), std::invalid_argument);
+  // Many per piece: its Bezier form, the same points up to round-off.
+  const std::vector<Point2> dense = curve.sampleSpans(16, parameters);
+  ASSERT_EQ(parameters.size(), 4u * 16u + 1u);
+  ASSERT_EQ(dense.size(), parameters.size());
+  for (size_t i = 0; i < dense.size(); ++i) {
+    EXPECT_NEAR((dense[i] - curve.pointAt(parameters[i])).norm(), 0.0, 1e-12) << i;
+  }
+  EXPECT_NEAR(parameters[16 + 5], 0.7 + 0.8 * 5 / 16, 1e-12);
 }
 
 // The polygon check searches a wave's spline flattened by flattenSpans; the renderer draws the

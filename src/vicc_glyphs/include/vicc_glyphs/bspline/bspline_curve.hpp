@@ -80,7 +80,8 @@ class BSplineCurve {
   std::vector<Point2> sample(int count) const;
   /// `per_span` >= 1 points on each polynomial piece (between breakpoints) at equally spaced
   /// parameters from its start, then the domain end; their parameters go to `parameters`. The
-  /// points equal pointAt's; the pieces are walked in order instead of searched per point.
+  /// points are pointAt's (up to round-off from 6 per piece on, as pointsAt's); the pieces are
+  /// walked in order instead of searched per point.
   std::vector<Point2> sampleSpans(int per_span, std::vector<double>& parameters) const;
   /// A cubic's polynomial pieces flattened as the renderer flattens the Bezier segments they
   /// become (dci/flattening.hpp): each piece in flatteningPieces uniform steps of its Bezier
