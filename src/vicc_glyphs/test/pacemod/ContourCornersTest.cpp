@@ -21,6 +21,19 @@ std::vector<ContourCorner> cornersAt(const std::vector<double>& arc_lengths) {
   return corners;
 }
 
+// `count` corners at distinct random arc lengths in [0, length), one of them at 0 if `closing`,
+// all at whole numbers if `whole`.
+std::vector<ContourCorner> randomCorners(std::mt19937& random, int count, double length,
+                                         bool closing, bool whole) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::set<double> arcs;
+  if (closing) arcs.insert(0.0);
+  while (static_cast<int>(arcs.size()) < count) {
+    arcs.insert(whole ? std::floor(length * unit(random)) : length * unit(random));
+  }
+  return cornersAt({arcs.begin(), arcs.end()});
+}
+
 std::vector<int> visited(const std::vector<ContourCorner>& corners, double l, double reach,
                          double length) {
   std::vector<int> indices;
@@ -59,11 +72,8 @@ TEST(ContourCornersTest, CornersNearAnArcLengthAreEveryOneWithinTheReachAcrossTh
   std::mt19937 random(3);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int trial = 0; trial < 200; ++trial) {
-    std::set<double> arcs;
-    if (trial % 2 == 0) arcs.insert(0.0);
-    const int count = 1 + trial % 40;
-    while (static_cast<int>(arcs.size()) < count) arcs.insert(length * unit(random));
-    const std::vector<ContourCorner> random_corners = cornersAt({arcs.begin(), arcs.end()});
+    const std::vector<ContourCorner> random_corners =
+        randomCorners(random, 1 + trial % 40, length, trial % 2 == 0, false);
     for (int query = 0; query < 20; ++query) {
       const double l = length * unit(random), reach = 30.0 * unit(random) * unit(random);
       std::vector<int> expected;
@@ -107,14 +117,9 @@ TEST(ContourCornersTest, NearestCornersAreThoseTheScanOfAllCornersFinds) {
   std::mt19937 random(11);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int trial = 0; trial < 300; ++trial) {
-    std::set<double> arcs;
-    if (trial % 3 == 0) arcs.insert(0.0);
-    const int count = 1 + trial % 25;
     // Whole numbers now and then, so that ties occur.
-    while (static_cast<int>(arcs.size()) < count) {
-      arcs.insert(trial % 2 ? std::floor(length * unit(random)) : length * unit(random));
-    }
-    const std::vector<ContourCorner> random_corners = cornersAt({arcs.begin(), arcs.end()});
+    const std::vector<ContourCorner> random_corners =
+        randomCorners(random, 1 + trial % 25, length, trial % 3 == 0, trial % 2 == 1);
     // Increasing arc lengths (the sweep), then a few out of order.
     std::vector<double> ls;
     for (int query = 0; query <= 100; ++query)
