@@ -99,13 +99,11 @@ std::vector<int> nearestCorners(const std::vector<ContourCorner>& corners,
     if (i > 0 && l < arc_lengths[i - 1]) above = 0;
     while (above < count && corners[above].arc_length < l) ++above;
     const bool closing_at_end = corners.front().arc_length == 0.0 && l > 0.5 * length;
-    // The nearest is that one or the first of those at the arc length just below l; or the
-    // closing corner counted at `length`. Ties go to the lowest index, as in a scan of all.
-    int below = above - 1;
-    while (below > 0 && corners[below - 1].arc_length == corners[below].arc_length) --below;
+    // The nearest is that one or the one before it; or the closing corner counted at `length`.
+    // Ties go to the lowest index, as in a scan of all.
     int best = -1;
     double best_distance = 0.0;
-    for (int c : {closing_at_end ? 0 : -1, below, above}) {
+    for (int c : {closing_at_end ? 0 : -1, above - 1, above}) {
       if (c < 0 || c >= count || c == best) continue;
       const double d = std::abs(l - (c == 0 && closing_at_end ? length : corners[c].arc_length));
       if (best < 0 || d < best_distance) {

@@ -579,6 +579,7 @@ BSplineCurve stripWave(const ContourFrame& frame, const OffsetFrame& offsets,
     breaks.push_back({wave.parameters[i], appliedOffset(wave, i), targetOf(wave, i), own});
     if (i + 1 == count) break;
     const double l0 = wave.parameters[i], l1 = wave.parameters[i + 1];
+    // The corners strictly inside the strip: those within half its length of its middle.
     forEachCornerNear(frame.corners, 0.5 * (l0 + l1), 0.5 * (l1 - l0), wave.layout.length,
                       [&](int c) {
                         const ContourCorner& corner = frame.corners[c];

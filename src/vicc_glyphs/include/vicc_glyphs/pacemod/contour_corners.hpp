@@ -95,7 +95,8 @@ void forEachCornerNear(const std::vector<ContourCorner>& corners, double l, doub
   }
 }
 
-/// Per arc length l of `arc_lengths` (fastest by increasing l) the corner nearest to it by
+/// Per arc length l of `arc_lengths` (fastest by increasing l) the corner of `corners` (distinct
+/// arc lengths by increasing index, as contourCorners gives them) nearest to it by
 /// |l - arc length|, the closing corner (at 0) counted at `length` when l lies past the middle;
 /// the lowest index among equally near ones; -1 without corners.
 std::vector<int> nearestCorners(const std::vector<ContourCorner>& corners,
