@@ -15,7 +15,7 @@ add_library(vicc_glyphs_bspline
   src/bspline/fowler_bartels.cpp
 )
 target_compile_options(vicc_glyphs_bspline PRIVATE ${VICC_WARNINGS})
-target_link_libraries(vicc_glyphs_bspline vicc_glyphs_dci)
+target_link_libraries(vicc_glyphs_bspline vicc_glyphs_dci vicc_glyphs_numerics)
 
 install(TARGETS vicc_glyphs_bspline
   LIBRARY DESTINATION ${CATKIN_PACKAGE_LIB_DESTINATION}
@@ -31,6 +31,7 @@ if(CATKIN_ENABLE_TESTING)
     test/bspline/FittingTest.cpp
     test/bspline/ElspiaTest.cpp
     test/bspline/FowlerBartelsTest.cpp
+    test/numerics/BandedCholeskyTest.cpp
   )
   target_compile_options(vicc_glyphs_bspline_test PRIVATE ${VICC_WARNINGS})
   target_link_libraries(vicc_glyphs_bspline_test vicc_glyphs_bspline gtest_main)

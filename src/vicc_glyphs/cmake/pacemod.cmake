@@ -79,6 +79,7 @@ if(CATKIN_ENABLE_TESTING)
     test/pacemod/SkeletonGuardTest.cpp
     test/pacemod/ContourWavesTest.cpp
     test/pacemod/ContourCornersTest.cpp
+    test/pacemod/SparseFowlerBartelsTest.cpp
     test/pacemod/OriginalSpliceTest.cpp
     test/pacemod/ContourTeethTest.cpp
     test/pacemod/OffsetContourTest.cpp

@@ -6,7 +6,6 @@ add_library(vicc_glyphs_render
   src/render/multigrid_levels.cpp
   src/render/multigrid_deflation.cpp
   src/render/multigrid_local_relaxation.cpp
-  src/render/banded_cholesky.cpp
   src/render/multigrid.cpp
   src/render/curve_antialiasing.cpp
   src/render/variable_blur.cpp
@@ -15,7 +14,7 @@ add_library(vicc_glyphs_render
   src/render/process_heap.cpp)
 target_compile_options(vicc_glyphs_render PRIVATE ${VICC_WARNINGS})
 target_include_directories(vicc_glyphs_render SYSTEM PUBLIC ${OpenCV_INCLUDE_DIRS})
-target_link_libraries(vicc_glyphs_render vicc_glyphs_dci vicc_glyphs_png ${VICC_GLYPHS_OPENCV})
+target_link_libraries(vicc_glyphs_render vicc_glyphs_dci vicc_glyphs_numerics vicc_glyphs_png ${VICC_GLYPHS_OPENCV})
 
 # sensor_msgs/Image is a header-only message type; only the adapter sees ROS headers.
 add_library(vicc_glyphs_ros src/ros/image_message.cpp)

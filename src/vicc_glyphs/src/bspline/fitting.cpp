@@ -70,21 +70,16 @@ CubicLeastSquares::CubicLeastSquares(const BSplineCurve& basis,
     : control_count_(basis.controlPointCount()) {
   checkParameters(basis, parameters);
   rows_ = basis.cubicBasisAt(parameters);
-  // Lower band of N^T N: band[c][k] is entry (c + k, c).
-  std::vector<std::array<double, 4>> band(control_count_, std::array<double, 4>{});
+  factor_.reset(control_count_, 3);
   for (const CubicBasisRow& row : rows_) {
     for (int a = 0; a < 4; ++a) {
-      for (int b = a; b < 4; ++b) band[row.first_index + a][b - a] += row.values[a] * row.values[b];
+      for (int b = a; b < 4; ++b) {
+        factor_.lower(row.first_index + b, row.first_index + a) += row.values[a] * row.values[b];
+      }
     }
   }
-  Eigen::SparseMatrix<double> normal(control_count_, control_count_);
-  normal.reserve(Eigen::VectorXi::Constant(control_count_, 4));
-  for (int c = 0; c < control_count_; ++c) {
-    for (int k = 0; k < 4 && c + k < control_count_; ++k) normal.insert(c + k, c) = band[c][k];
-  }
-  normal.makeCompressed();
-  factor_.compute(normal);
-  if (factor_.info() != Eigen::Success) {
+  factor_.factorise();
+  if (factor_.raisedPivots() > 0) {
     throw std::invalid_argument("CubicLeastSquares: the " + std::to_string(parameters.size()) +
                                 " parameters do not determine all " +
                                 std::to_string(control_count_) +
@@ -97,13 +92,22 @@ Eigen::MatrixX2d CubicLeastSquares::solve(const Eigen::MatrixX2d& targets) const
     throw std::invalid_argument("CubicLeastSquares: " + std::to_string(targets.rows()) +
                                 " targets for " + std::to_string(parameterCount()) + " parameters");
   }
-  Eigen::MatrixX2d right = Eigen::MatrixX2d::Zero(control_count_, 2);  // N^T P
+  // N^T P, one coordinate per array (the banded solve works on contiguous values).
+  std::vector<double> x(control_count_, 0.0), y(control_count_, 0.0);
   for (std::size_t i = 0; i < rows_.size(); ++i) {
+    const CubicBasisRow& row = rows_[i];
+    const double px = targets(static_cast<Eigen::Index>(i), 0);
+    const double py = targets(static_cast<Eigen::Index>(i), 1);
     for (int a = 0; a < 4; ++a) {
-      right.row(rows_[i].first_index + a) += rows_[i].values[a] * targets.row(static_cast<int>(i));
+      x[row.first_index + a] += row.values[a] * px;
+      y[row.first_index + a] += row.values[a] * py;
     }
   }
-  return factor_.solve(right);
+  factor_.solve(x.data());
+  factor_.solve(y.data());
+  Eigen::MatrixX2d control(control_count_, 2);
+  for (int j = 0; j < control_count_; ++j) control.row(j) << x[j], y[j];
+  return control;
 }
 
 std::vector<Point2> CubicLeastSquares::solvePoints(const Eigen::MatrixX2d& targets) const {

@@ -1,52 +1,113 @@
 #include "vicc_glyphs/pacemod/sparse_fowler_bartels.hpp"
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
+#include "vicc_glyphs/numerics/banded_cholesky.hpp"
+
 namespace vicc_glyphs {
 namespace pacemod {
+namespace {
 
-bspline::BSplineCurve sparseFowlerBartels(
+// One constraint's row of N (degree + 1 values from first_index on) and its target offset.
+struct ConstraintRow {
+  bspline::BasisRow basis;
+  Point2 offset;
+};
+
+std::vector<ConstraintRow> constraintRows(
     const bspline::BSplineCurve& curve, const std::vector<bspline::CurveConstraint>& constraints) {
-  if (constraints.empty()) return curve;
-  const int rows = static_cast<int>(constraints.size());
-  std::vector<Eigen::Triplet<double>> entries;
-  Eigen::MatrixX2d offsets(rows, 2);
-  for (int i = 0; i < rows; ++i) {
+  std::vector<ConstraintRow> rows;
+  rows.reserve(constraints.size());
+  for (std::size_t i = 0; i < constraints.size(); ++i) {
     const bspline::CurveConstraint& c = constraints[i];
     if (!std::isfinite(c.parameter) || c.parameter < curve.domainBegin() ||
         c.parameter > curve.domainEnd() || !c.target.allFinite() || c.derivative_order < 0) {
       throw std::invalid_argument("sparseFowlerBartels: constraint " + std::to_string(i) +
                                   " is not finite, outside the domain or has a negative order");
     }
-    const bspline::BasisRow row = curve.basisAt(c.parameter, c.derivative_order);
-    for (int k = 0; k < row.values.size(); ++k) {
-      if (row.values[k] != 0.0) entries.emplace_back(i, row.first_index + k, row.values[k]);
+    rows.push_back({curve.basisAt(c.parameter, c.derivative_order),
+                    c.target - curve.derivativeAt(c.parameter, c.derivative_order)});
+  }
+  return rows;
+}
+
+// The rows' order by the first de Boor point each touches: two rows meet in N N^T only when
+// those are at most `degree` apart, so the Gram matrix of the rows in this order is banded
+// (PACEMOD's seam and icon-corner rows come first and last, out of order along the curve).
+std::vector<int> alongTheCurve(const std::vector<ConstraintRow>& rows) {
+  std::vector<int> order(rows.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return rows[a].basis.first_index < rows[b].basis.first_index;
+  });
+  return order;
+}
+
+// Entry (i, j) of N N^T: the sum over the de Boor points both rows touch.
+double gramEntry(const bspline::BasisRow& a, const bspline::BasisRow& b) {
+  const int shift = b.first_index - a.first_index;  // >= 0 for sorted rows a before b
+  double sum = 0.0;
+  for (int k = shift; k < a.values.size(); ++k) sum += a.values[k] * b.values[k - shift];
+  return sum;
+}
+
+std::string contradictory(int count) {
+  return "sparseFowlerBartels: " + std::to_string(count) +
+         " constraints are contradictory or have too few de Boor points";
+}
+
+}  // namespace
+
+bspline::BSplineCurve sparseFowlerBartels(
+    const bspline::BSplineCurve& curve, const std::vector<bspline::CurveConstraint>& constraints) {
+  if (constraints.empty()) return curve;
+  const std::vector<ConstraintRow> unsorted = constraintRows(curve, constraints);
+  const std::vector<int> order = alongTheCurve(unsorted);
+  const auto row = [&](int i) -> const ConstraintRow& { return unsorted[order[i]]; };
+  const int count = static_cast<int>(unsorted.size());
+  const int degree = curve.degree();
+  // Per row the first earlier row it meets; the widest such reach is the band.
+  std::vector<int> first_met(count);
+  int bandwidth = 0;
+  for (int j = 0, i = 0; j < count; ++j) {
+    while (row(i).basis.first_index + degree < row(j).basis.first_index) ++i;
+    first_met[j] = i;
+    bandwidth = std::max(bandwidth, j - i);
+  }
+  // More than 2 degree + 1 rows within such a reach share at most 2 degree + 1 de Boor points:
+  // dependent, and a band that wide could be as large as the whole matrix.
+  if (bandwidth > 2 * degree) throw std::invalid_argument(contradictory(count));
+  numerics::BandedCholesky gram;
+  gram.reset(count, bandwidth);
+  double scale = 0.0;
+  for (int j = 0; j < count; ++j) {
+    for (int i = first_met[j]; i <= j; ++i) {
+      gram.lower(j, i) = gramEntry(row(i).basis, row(j).basis);
     }
-    offsets.row(i) = (c.target - curve.derivativeAt(c.parameter, c.derivative_order)).transpose();
+    scale = std::max(scale, gram.lower(j, j));
   }
-  Eigen::SparseMatrix<double> n(rows, curve.controlPointCount());
-  n.setFromTriplets(entries.begin(), entries.end());
-  const Eigen::SparseMatrix<double> gram = n * n.transpose();
-  // PACEMOD's constraints are the knot points in order along the curve plus a few (the seam,
-  // icon corners): the Gram matrix is banded but for those rows, and in the given order the
-  // factor fills one column per such row. AMD's ordering cost more than it saved (the brain
-  // with rectangle waves 12/10 mm, 1.2 mm: 33.2 -> 27.2 M instructions in this function).
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
-      solver(gram);
-  const double scale = gram.diagonal().maxCoeff();
-  if (solver.info() != Eigen::Success ||
-      !(solver.vectorD().cwiseAbs().minCoeff() > 1e-12 * scale)) {
-    throw std::invalid_argument("sparseFowlerBartels: " + std::to_string(rows) +
-                                " constraints are contradictory or have too few de Boor points");
+  gram.factorise();
+  if (gram.raisedPivots() > 0 || !(gram.smallestPivot() > 1e-12 * scale)) {
+    throw std::invalid_argument(contradictory(count));
   }
-  const Eigen::MatrixX2d control_offsets = n.transpose() * solver.solve(offsets);
+  // Delta D = N^T (N N^T)^{-1} Delta P, per coordinate.
+  std::vector<double> x(count), y(count);
+  for (int i = 0; i < count; ++i) {
+    x[i] = row(i).offset.x();
+    y[i] = row(i).offset.y();
+  }
+  gram.solve(x.data());
+  gram.solve(y.data());
   std::vector<Point2> points = curve.controlPoints();
-  for (std::size_t j = 0; j < points.size(); ++j) {
-    points[j] += control_offsets.row(static_cast<int>(j)).transpose();
+  for (int i = 0; i < count; ++i) {
+    const bspline::BasisRow& basis = row(i).basis;
+    for (int k = 0; k < basis.values.size(); ++k) {
+      points[basis.first_index + k] += basis.values[k] * Point2(x[i], y[i]);
+    }
   }
   bspline::BSplineCurve result = curve;
   result.setControlPoints(std::move(points));

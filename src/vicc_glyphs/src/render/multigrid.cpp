@@ -17,10 +17,10 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "banded_cholesky.hpp"
 #include "multigrid_deflation.hpp"
 #include "multigrid_levels.hpp"
 #include "multigrid_local_relaxation.hpp"
+#include "vicc_glyphs/numerics/banded_cholesky.hpp"
 #include "vicc_glyphs/render/pixel_buffer.hpp"
 
 namespace vicc_glyphs {
@@ -1202,7 +1202,7 @@ class Multigrid {
   std::vector<CoarseLevel> coarse_;  // level l + 1 at index l
   std::vector<Transfer> transfers_;  // from level l + 1 to level l at index l
   std::vector<std::uint8_t> flags_;  // coarsening scratch
-  BandedCholesky coarsest_;
+  numerics::BandedCholesky coarsest_;
   std::vector<double> coarsest_values_;
   size_t free_count_ = 0;
   std::vector<Field> u_, f_;        // per level: solution (FMG) or correction (V-cycle), rhs

@@ -1,5 +1,5 @@
-// The coarse operators of the multigrid against dense products, the prolongation's respect for
-// cut links, and the coarsest level's banded Cholesky against Eigen.
+// The coarse operators of the multigrid against dense products and the prolongation's respect
+// for cut links (the coarsest level's banded Cholesky: test/numerics/BandedCholeskyTest.cpp).
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "banded_cholesky.hpp"
 #include "direct_reference_solve.hpp"
 #include "multigrid_levels.hpp"
 
@@ -163,47 +162,6 @@ TEST(GalerkinCoarseningTest, ProlongationDoesNotCrossCutLinksAndKeepsConstants) 
       EXPECT_LE(p.row(f).sum(), 1.0 + 1e-6) << f;
     }
   }
-}
-
-TEST(GalerkinCoarseningTest, BandedCholeskySolvesLikeADenseFactorisation) {
-  // A 9-point operator on 7 x 5 points in row-major order (band 8) plus a diagonal shift.
-  const int w = 7, h = 5, n = w * h;
-  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
-  std::mt19937 random(3);
-  std::uniform_real_distribution<double> coupling(0.1, 1.0);
-  for (int k = 0; k < n; ++k) {
-    for (const auto& [dx, dy] : {std::pair{1, 0}, {-1, 1}, {0, 1}, {1, 1}}) {
-      const int x = k % w + dx, y = k / w + dy;
-      if (x < 0 || x >= w || y >= h) continue;
-      const double a = coupling(random);
-      dense(k, y * w + x) = dense(y * w + x, k) = -a;
-      dense(k, k) += a;
-      dense(y * w + x, y * w + x) += a;
-    }
-    dense(k, k) += 0.05;
-  }
-  BandedCholesky cholesky;
-  cholesky.reset(n, w + 1);
-  for (int i = 0; i < n; ++i) {
-    for (int j = std::max(0, i - w - 1); j <= i; ++j) cholesky.lower(i, j) = dense(i, j);
-  }
-  cholesky.factorise();
-  Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
-  std::vector<double> x(b.data(), b.data() + n);
-  cholesky.solve(x.data());
-  const Eigen::VectorXd expected = dense.llt().solve(b);
-  for (int k = 0; k < n; ++k) EXPECT_NEAR(x[k], expected[k], 1e-10) << k;
-  // Singular (round-off can make a nearly singular coarse operator so): the pivot is raised,
-  // the solve stays finite and solves the consistent system approximately.
-  cholesky.reset(2, 1);
-  cholesky.lower(0, 0) = 1.0;
-  cholesky.lower(1, 0) = 1.0;
-  cholesky.lower(1, 1) = 1.0;
-  cholesky.factorise();
-  double consistent[2] = {1.0, 1.0};
-  cholesky.solve(consistent);
-  EXPECT_TRUE(std::isfinite(consistent[0]) && std::isfinite(consistent[1]));
-  EXPECT_NEAR(consistent[0] + consistent[1], 1.0, 1e-6);
 }
 
 }  // namespace

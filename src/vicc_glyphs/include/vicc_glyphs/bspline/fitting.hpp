@@ -1,11 +1,11 @@
 #pragma once
 // B-spline interpolation and least-squares approximation (thesis 2.5.3, Eqs. 2.43 and 2.47).
 
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <vector>
 
 #include "vicc_glyphs/bspline/bspline_curve.hpp"
+#include "vicc_glyphs/numerics/banded_cholesky.hpp"
 
 namespace vicc_glyphs {
 namespace bspline {
@@ -33,15 +33,17 @@ BSplineCurve leastSquaresFit(int degree, std::vector<double> knots,
 
 /// Least squares on a cubic basis at fixed parameters, for many sets of points: the normal
 /// equations N^T N D = N^T P (the minimiser leastSquaresFit finds by QR). N^T N is banded (each
-/// parameter touches four neighbouring basis functions), so it is summed from the basis rows
-/// directly and factorised once in its natural order, which has no fill-in; every solve costs
-/// one back substitution. For data that determine the curve well (many parameters per span);
-/// QR is the better conditioned choice for interpolation-like fits.
+/// parameter touches four neighbouring basis functions, 3 entries left of the diagonal), so it
+/// is summed from the basis rows directly into a band and factorised once (banded Cholesky, no
+/// fill-in); every solve costs one back substitution per coordinate. For data that determine
+/// the curve well (many parameters per span); QR is the better conditioned choice for
+/// interpolation-like fits.
 class CubicLeastSquares {
  public:
   /// `basis`: a cubic (its de Boor points are ignored); `parameters` must not decrease and lie in
   /// its domain. Throws std::invalid_argument for another degree, a bad parameter or when the
-  /// parameters do not determine every de Boor point (N^T N not positive definite).
+  /// parameters do not determine every de Boor point (N^T N not positive definite: a pivot at
+  /// or below BandedCholesky::kPivotFloor times its diagonal entry).
   CubicLeastSquares(const BSplineCurve& basis, const std::vector<double>& parameters);
 
   int parameterCount() const { return static_cast<int>(rows_.size()); }
@@ -53,8 +55,7 @@ class CubicLeastSquares {
  private:
   int control_count_ = 0;
   std::vector<CubicBasisRow> rows_;
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
-      factor_;
+  numerics::BandedCholesky factor_;
 };
 
 }  // namespace bspline

@@ -1,9 +1,11 @@
 #pragma once
 // Fowler-Bartels (thesis Eq. 2.48) for the many local constraints of a wave: the same minimum-norm
 // de Boor offsets Delta D = N^T (N N^T)^{-1} Delta P as bspline::fowlerBartelsModify, but with N
-// sparse and the banded Gram matrix N N^T factorised by a sparse LDL^T, so the cost grows
-// linearly with the number of constraints (the toolkit's dense version with its full-pivoting
-// rank check grows with rows^2 * columns: seconds for a few hundred wave knot points).
+// sparse and the Gram matrix N N^T of the rows sorted along the curve factorised as a band
+// (numerics::BandedCholesky), so the cost grows linearly with the number of constraints (the
+// toolkit's dense version with its full-pivoting rank check grows with rows^2 * columns: seconds
+// for a few hundred wave knot points; Eigen's sparse LDL^T spent twice the whole function's
+// present cost in its bookkeeping).
 
 #include <vector>
 

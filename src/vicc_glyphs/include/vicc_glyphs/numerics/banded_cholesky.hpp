@@ -1,12 +1,15 @@
 #pragma once
 // Cholesky factorisation of a symmetric positive definite band matrix, in double: the exact
-// solve of the coarsest multigrid level (a 9-point operator on at most 64 x 64 points, in
-// row-major order a band of width + 1 on each side of the diagonal).
+// solve of the renderer's coarsest multigrid level (a 9-point operator on at most 64 x 64 points,
+// in row-major order a band of width + 1 on each side of the diagonal) and the B-spline fits'
+// normal equations (a cubic's N^T N has 3 entries left of the diagonal). A general sparse
+// factorisation (Eigen's SimplicialLLT) spent more in its bookkeeping than in the arithmetic
+// on such bands.
 
 #include <cstddef>
 #include <vector>
 
-namespace vicc_glyphs::multigrid_detail {
+namespace vicc_glyphs::numerics {
 
 class BandedCholesky {
  public:
@@ -18,12 +21,18 @@ class BandedCholesky {
   }
   /// Factorises the lower band in place. A pivot that round-off leaves at or below
   /// kPivotFloor times its diagonal entry is raised to that (the factor then belongs to a
-  /// slightly shifted, still positive definite matrix).
+  /// slightly shifted, still positive definite matrix); raisedPivots() counts them, so that a
+  /// caller for whom a singular matrix is an error can say so.
   void factorise();
   static constexpr double kPivotFloor = 1e-12;
+  /// Pivots the last factorise() raised to the floor.
+  int raisedPivots() const { return raised_pivots_; }
+  /// The smallest squared diagonal entry of the factor (the D of L D L^T) after factorise().
+  double smallestPivot() const { return smallest_pivot_; }
   /// Solves A x = b in place (x holds b on entry), n values.
   void solve(double* x) const;
   int size() const { return n_; }
+  int bandwidth() const { return bandwidth_; }
 
  private:
   double factorEntry(int row, int column) const {
@@ -32,8 +41,10 @@ class BandedCholesky {
 
   int n_ = 0;
   int bandwidth_ = 0;
+  int raised_pivots_ = 0;
+  double smallest_pivot_ = 0.0;
   std::vector<double> factor_;
   std::vector<double> original_diagonal_;
 };
 
-}  // namespace vicc_glyphs::multigrid_detail
+}  // namespace vicc_glyphs::numerics

@@ -1,9 +1,10 @@
-#include "banded_cholesky.hpp"
+#include "vicc_glyphs/numerics/banded_cholesky.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
-namespace vicc_glyphs::multigrid_detail {
+namespace vicc_glyphs::numerics {
 
 void BandedCholesky::reset(int n, int bandwidth) {
   n_ = n;
@@ -13,6 +14,8 @@ void BandedCholesky::reset(int n, int bandwidth) {
 
 void BandedCholesky::factorise() {
   original_diagonal_.resize(n_);
+  raised_pivots_ = 0;
+  smallest_pivot_ = n_ > 0 ? std::numeric_limits<double>::infinity() : 0.0;
   for (int i = 0; i < n_; ++i) original_diagonal_[i] = factorEntry(i, i);
   for (int i = 0; i < n_; ++i) {
     const int first = std::max(0, i - bandwidth_);
@@ -24,12 +27,17 @@ void BandedCholesky::factorise() {
       if (j < i) {
         lower(i, j) = sum / factorEntry(j, j);
       } else {
-        // The coarse operators are positive definite by construction; float round-off in a
-        // nearly singular one (a region pinned by a single pixel) can still leave a pivot at
-        // or below 0. A small positive pivot keeps the coarse solve symmetric positive
-        // definite (the preconditioner stays valid; CG corrects the approximation).
+        // The renderer's coarse operators are positive definite by construction; float
+        // round-off in a nearly singular one (a region pinned by a single pixel) can still
+        // leave a pivot at or below 0. A small positive pivot keeps the coarse solve symmetric
+        // positive definite (the preconditioner stays valid; CG corrects the approximation).
         const double diagonal = std::abs(original_diagonal_[i]);
-        lower(i, i) = std::sqrt(std::max(sum, kPivotFloor * (diagonal > 0.0 ? diagonal : 1.0)));
+        const double floor = kPivotFloor * (diagonal > 0.0 ? diagonal : 1.0);
+        // Not `sum <= floor`: a NaN sum counts as raised too.
+        if (!(sum > floor)) ++raised_pivots_;
+        const double pivot = std::max(sum, floor);
+        smallest_pivot_ = std::min(smallest_pivot_, pivot);
+        lower(i, i) = std::sqrt(pivot);
       }
     }
   }
@@ -48,4 +56,4 @@ void BandedCholesky::solve(double* x) const {
   }
 }
 
-}  // namespace vicc_glyphs::multigrid_detail
+}  // namespace vicc_glyphs::numerics
