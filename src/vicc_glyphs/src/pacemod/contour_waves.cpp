@@ -23,13 +23,49 @@ struct FrameSamples {
   std::vector<std::vector<ContourSample>> flanks;
 };
 
+// Where knot point `i` goes: from `base` along the unit `direction` (sign included) by a
+// translation that puts it `growth` times as far from the contour, met at `parameter`.
+struct Placement {
+  double parameter = 0.0;
+  Point2 base = Point2::Zero();
+  Point2 direction = Point2::Zero();
+  double growth = 1.0;
+  int corner = -1;
+  /// At a corner's offset point without moving onto the corner (strips): valid only for an
+  /// amplitude that puts the knot point's own offset point past the corner's bisector.
+  bool at_miter = false;
+};
+
+// A knot point's place and the guard's verdict there (see placeOnCornerOrOwn).
+struct GuardedPlacement {
+  Placement placement;
+  GuardResult allowed;    ///< the guard's amplitude at `placement` (caps not applied)
+  bool cornered = false;  ///< `allowed` limited by bisectorCap
+};
+
 }  // namespace detail
+
+struct GuardVerdicts::Store {
+  const ContourFrame* frame = nullptr;
+  const SkeletonGuard* guard = nullptr;
+  double amplitude = std::numeric_limits<double>::quiet_NaN();
+  std::vector<char> known;
+  std::vector<double> cap;  ///< the cap each verdict was made under (infinity: none)
+  std::vector<detail::GuardedPlacement> verdict;
+};
+
+GuardVerdicts::GuardVerdicts() : store_(std::make_unique<Store>()) {}
+GuardVerdicts::~GuardVerdicts() = default;
+GuardVerdicts::GuardVerdicts(GuardVerdicts&&) noexcept = default;
+GuardVerdicts& GuardVerdicts::operator=(GuardVerdicts&&) noexcept = default;
 
 namespace {
 
 using bspline::BSplineCurve;
 using detail::ContourSample;
+using detail::GuardedPlacement;
 using detail::OffsetFrame;
+using detail::Placement;
 using detail::StripPiece;
 
 // Arc lengths closer than this (px) are the same place: an icon corner on a wave's knot.
@@ -130,19 +166,6 @@ std::vector<bspline::CurveConstraint> seamConstraints(const ContourFrame& frame,
   return {{fit.domainBegin(), mean, 1}, {fit.domainEnd(), mean, 1}};
 }
 
-// Where knot point `i` goes: from `base` along the unit `direction` (sign included) by a
-// translation that puts it `growth` times as far from the contour, met at `parameter`.
-struct Placement {
-  double parameter = 0.0;
-  Point2 base = Point2::Zero();
-  Point2 direction = Point2::Zero();
-  double growth = 1.0;
-  int corner = -1;
-  /// At a corner's offset point without moving onto the corner (strips): valid only for an
-  /// amplitude that puts the knot point's own offset point past the corner's bisector.
-  bool at_miter = false;
-};
-
 bool isStripWaveform(Waveform waveform) {
   return waveform == Waveform::Triangle || waveform == Waveform::Sawtooth;
 }
@@ -234,12 +257,6 @@ GuardResult guardedAmplitude(const Placement& placement, double amplitude,
 // that amplitude, would fall past the bisector. With less (a repair round's cap, the skeleton
 // guard) its own offset point is the offset contour, and the miter, further along the side,
 // would make the strips next to it run back.
-struct GuardedPlacement {
-  Placement placement;
-  GuardResult allowed;    ///< the guard's amplitude at `placement` (caps not applied)
-  bool cornered = false;  ///< `allowed` limited by bisectorCap
-};
-
 GuardedPlacement placeOnCornerOrOwn(const ContourFrame& frame, std::size_t i, double amplitude,
                                     const SkeletonGuard* guard, const std::vector<double>& caps) {
   const Placement placement = placePeak(frame, i, amplitude);
@@ -289,6 +306,32 @@ GuardedPlacement placeGuardedPeak(const ContourFrame& frame, std::size_t i, doub
     result.cornered = true;
   }
   return result;
+}
+
+// placeGuardedPeak, or the verdict `verdicts` holds for knot point i under the same cap. The
+// verdict depends on the cap only through min(guard's amplitude, max(cap, 0)), and the guard
+// never allows more than the amplitude: a cap at or above it is no cap.
+GuardedPlacement rememberedPeak(const ContourFrame& frame, std::size_t i, double amplitude,
+                                const SkeletonGuard* guard, const std::vector<double>& caps,
+                                GuardVerdicts* verdicts) {
+  if (!verdicts) return placeGuardedPeak(frame, i, amplitude, guard, caps);
+  GuardVerdicts::Store& store = verdicts->store();
+  const std::size_t count = frame.layout.peaks.size();
+  if (store.frame != &frame || store.guard != guard || !(store.amplitude == amplitude) ||
+      store.known.size() != count) {
+    store = GuardVerdicts::Store{
+        &frame, guard, amplitude, std::vector<char>(count, 0), std::vector<double>(count), {}};
+    store.verdict.resize(count);
+  }
+  const double cap = i < caps.size() && caps[i] < amplitude
+                         ? std::max(caps[i], 0.0)
+                         : std::numeric_limits<double>::infinity();
+  if (!store.known[i] || store.cap[i] != cap) {
+    store.verdict[i] = placeGuardedPeak(frame, i, amplitude, guard, caps);
+    store.cap[i] = cap;
+    store.known[i] = 1;
+  }
+  return store.verdict[i];
 }
 
 // The original's points and normals that placePeak and smoothWave take, for every amplitude.
@@ -668,7 +711,8 @@ ContourFrame contourFrame(const BSplineCurve& original, const bspline::ArcLength
 
 ContourWave modifyContour(const ContourFrame& frame, const BSplineCurve& original,
                           const bspline::ArcLengthTable& table, double amplitude,
-                          const SkeletonGuard* guard, const std::vector<double>& caps) {
+                          const SkeletonGuard* guard, const std::vector<double>& caps,
+                          GuardVerdicts* verdicts) {
   ContourWave wave{original, frame.layout, {}, {}, {}, {}, {}, {}, {}, {}, {}};
   const OffsetFrame offsets{original, table, frame.area};
   const std::size_t count = wave.layout.peaks.size();
@@ -686,7 +730,7 @@ ContourWave modifyContour(const ContourFrame& frame, const BSplineCurve& origina
       wave.translations.push_back(wave.translations.front());
       continue;
     }
-    const GuardedPlacement guarded = placeGuardedPeak(frame, i, amplitude, guard, caps);
+    const GuardedPlacement guarded = rememberedPeak(frame, i, amplitude, guard, caps, verdicts);
     const Placement& placement = guarded.placement;
     GuardResult allowed = guarded.allowed;
     const bool capped = i < caps.size() && caps[i] < allowed.amplitude;

@@ -29,6 +29,7 @@ struct WavedContour {
   std::unique_ptr<ContourFrame> frame;  ///< built once, the same for every repair round
   std::unique_ptr<ContourWave> wave;
   std::vector<double> caps;
+  GuardVerdicts verdicts;  ///< kept between repair rounds: only changed caps are judged again
   CurveWaveReport report;
 };
 
@@ -62,7 +63,8 @@ void build(WavedContour& contour, const Context& context) {
   }
   contour.wave = std::make_unique<ContourWave>(
       modifyContour(*contour.frame, contour.spline.geometry, *contour.table,
-                    context.spec.amplitude_mm * context.px_per_mm, context.guard, contour.caps));
+                    context.spec.amplitude_mm * context.px_per_mm, context.guard, contour.caps,
+                    &contour.verdicts));
   // No cap until the polygon check sets one (capAround halves the amplitude applied).
   if (contour.caps.empty()) contour.caps.assign(contour.wave->guarded.size(), kNoCap);
 }
@@ -96,7 +98,7 @@ std::unique_ptr<WavedContour> prepare(const DiffusionCurve& curve, int index,
     return nullptr;
   }
   std::unique_ptr<WavedContour> contour(new WavedContour{
-      bspline::toSplineDiffusionCurve(curve), nullptr, nullptr, nullptr, {}, report});
+      bspline::toSplineDiffusionCurve(curve), nullptr, nullptr, nullptr, {}, {}, report});
   contour->table = std::make_unique<bspline::ArcLengthTable>(contour->spline.geometry);
   const double length = contour->table->totalLength();
   report.arc_length_mm = length / context.px_per_mm;

@@ -6,6 +6,7 @@
 #include "../support/straight_chain.hpp"
 #include "vicc_glyphs/bspline/bezier_conversion.hpp"
 #include "vicc_glyphs/pacemod/contour_waves.hpp"
+#include "vicc_glyphs/pacemod/nearest_curve_point.hpp"
 #include "vicc_glyphs/pacemod/polygon_crossings.hpp"
 #include "vicc_glyphs/pacemod/polyline.hpp"
 
@@ -283,6 +284,49 @@ TEST(ContourWavesTest, RectanglePlateausStayAtTheirAmplitudeAroundASharpTip) {
     EXPECT_LT(farthest, 1.08) << count << " waves";
     EXPECT_GT(farthest, 0.99) << count << " waves";
   }
+}
+
+// The repair rounds' way of calling: one GuardVerdicts across calls on the same frame with caps
+// changed on a few knot points (below the amplitude, below 0, above it, back again), then
+// another amplitude. Every call gives exactly the wave a call without it gives. The guard is
+// busy: the square's sides and a bar 6 px inside its top side reduce the outward and inward
+// knot points there.
+TEST_P(EveryWaveform, RememberedGuardVerdictsGiveTheSameWaveAsFreshOnes) {
+  const BSplineCurve original = square();
+  const bspline::ArcLengthTable table(original, 256);
+  const std::vector<std::vector<Point2>> lines{
+      {{50, 50}, {250, 50}, {250, 250}, {50, 250}, {50, 50}}, {{80, 56}, {220, 56}}};
+  const NearestCurvePoint field(lines, 300, 300);
+  const SkeletonGuard guard(field, 0.5);
+  const ContourFrame frame = contourFrame(original, table, GetParam(), 22);
+  const std::size_t count = frame.layout.peaks.size();
+  std::vector<std::vector<double>> rounds{{}, std::vector<double>(count, 1e300)};
+  rounds.push_back(rounds.back());
+  rounds.back()[3] = 1.5;
+  rounds.back()[4] = -1.0;
+  rounds.back()[count - 2] = 0.0;
+  rounds.push_back(rounds.back());
+  rounds.back()[3] = 0.75;
+  rounds.back()[5] = 9.0;  // above the amplitude: no cap
+  rounds.push_back(rounds[1]);
+  GuardVerdicts verdicts;
+  int reduced = 0;
+  for (double amplitude : {5.0, 5.0, 2.5}) {
+    for (const std::vector<double>& caps : rounds) {
+      const ContourWave fresh = modifyContour(frame, original, table, amplitude, &guard, caps);
+      const ContourWave kept =
+          modifyContour(frame, original, table, amplitude, &guard, caps, &verdicts);
+      EXPECT_EQ(kept.curve.knots(), fresh.curve.knots());
+      EXPECT_EQ(kept.curve.controlPoints(), fresh.curve.controlPoints());
+      EXPECT_EQ(kept.on_corner, fresh.on_corner);
+      ASSERT_EQ(kept.guarded.size(), fresh.guarded.size());
+      for (std::size_t i = 0; i < kept.guarded.size(); ++i) {
+        EXPECT_EQ(kept.guarded[i].amplitude, fresh.guarded[i].amplitude) << i;
+        reduced += fresh.guarded[i].reduced;
+      }
+    }
+  }
+  EXPECT_GT(reduced, 0);
 }
 
 TEST(ContourWavesTest, OpenCurvesAreRejected) {

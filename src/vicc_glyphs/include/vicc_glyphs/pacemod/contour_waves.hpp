@@ -86,10 +86,31 @@ struct ContourFrame {
 ContourFrame contourFrame(const bspline::BSplineCurve& original,
                           const bspline::ArcLengthTable& table, Waveform waveform, int wave_count);
 
-/// The wave on a frame built from the same `original` and `table` by contourFrame.
+/// Where a contour's knot points go and how far the skeleton guard lets each (its nearest-point
+/// searches), kept from one modifyContour call to the next: the repair rounds rebuild a contour
+/// on the same frame with the same amplitude and guard, with new caps on a few knot points, and
+/// a knot point's verdict depends on its own cap only. Starts afresh when the frame, the
+/// amplitude or the guard change. One per contour; not for concurrent calls.
+class GuardVerdicts {
+ public:
+  GuardVerdicts();
+  ~GuardVerdicts();
+  GuardVerdicts(GuardVerdicts&&) noexcept;
+  GuardVerdicts& operator=(GuardVerdicts&&) noexcept;
+
+  struct Store;  ///< defined with modifyContour
+  Store& store() { return *store_; }
+
+ private:
+  std::unique_ptr<Store> store_;
+};
+
+/// The wave on a frame built from the same `original` and `table` by contourFrame; the same
+/// wave with or without `verdicts` (which only saves the guard's work in later calls).
 ContourWave modifyContour(const ContourFrame& frame, const bspline::BSplineCurve& original,
                           const bspline::ArcLengthTable& table, double amplitude,
-                          const SkeletonGuard* guard, const std::vector<double>& caps = {});
+                          const SkeletonGuard* guard, const std::vector<double>& caps = {},
+                          GuardVerdicts* verdicts = nullptr);
 
 /// `original` must be closed (first == last point) and have a tangent everywhere; `table` its
 /// arc-length table; amplitude in image pixels (>= 0); `guard` may be null (no prevention);
