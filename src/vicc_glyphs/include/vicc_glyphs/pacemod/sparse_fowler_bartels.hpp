@@ -4,8 +4,7 @@
 // sparse and the Gram matrix N N^T of the rows sorted along the curve factorised as a band
 // (numerics::BandedCholesky), so the cost grows linearly with the number of constraints (the
 // toolkit's dense version with its full-pivoting rank check grows with rows^2 * columns: seconds
-// for a few hundred wave knot points; Eigen's sparse LDL^T spent twice the whole function's
-// present cost in its bookkeeping).
+// for a few hundred wave knot points).
 
 #include <vector>
 
