@@ -431,22 +431,9 @@ BSplineCurve meetTargets(const BSplineCurve& fit, const ContourFrame& frame,
   return sparseFowlerBartels(fit, constraints);
 }
 
-// Inside each icon corner's angle (for the current offsets): how far along the side before and
-// after it the offset contour is swallowed; {0, 0} outside the angle.
-std::vector<std::pair<double, double>> swallowedStretches(const ContourFrame& frame,
-                                                          const detail::OffsetFit::Offset& offset) {
-  std::vector<std::pair<double, double>> stretches(frame.corners.size(), {0.0, 0.0});
-  for (std::size_t c = 0; c < frame.corners.size(); ++c) {
-    if (!frame.corners[c].inside(offset(frame.corners[c].arc_length))) continue;
-    const int i = static_cast<int>(c);
-    stretches[c] = {frame.offset_fit->meetingDistance(i, -1, offset),
-                    frame.offset_fit->meetingDistance(i, 1, offset)};
-  }
-  return stretches;
-}
-
 // Where knot point i lies against the inner icon corners around it (corners are sorted by arc
-// length; only the two around it can hold it):
+// length; only the two around it can hold it), with `meeting` the corners' meeting distances
+// (OffsetFit::CornerPassage: the stretch of each side whose offset falls past the bisector):
 // - swallowed: within the stretch of a side whose offset falls past the corner's bisector;
 // - spread: past that stretch but within the one the offset fit spreads what is left of the
 //   side's offset over (OffsetFit::spreadDistance). There the fit takes the offset contour from
@@ -460,7 +447,7 @@ struct InnerCorner {
 };
 
 InnerCorner innerCornerOf(const ContourFrame& frame, const ContourWave& wave, std::size_t i,
-                          const std::vector<std::pair<double, double>>& stretches) {
+                          const std::vector<std::pair<double, double>>& meeting) {
   InnerCorner spread;
   if (frame.corners.empty()) return spread;
   const double end = wave.layout.length, l = wave.parameters[i];
@@ -474,7 +461,7 @@ InnerCorner innerCornerOf(const ContourFrame& frame, const ContourWave& wave, st
     if (!corner.inside(appliedOffset(wave, i))) continue;
     const double d = cyclicOffset(corner.arc_length, l, end);  // the closing corner: 0 and L
     const int side = d < 0.0 ? -1 : 1;
-    const double met = side < 0 ? stretches[c].first : stretches[c].second;
+    const double met = side < 0 ? meeting[c].first : meeting[c].second;
     if (std::abs(d) < met) return {static_cast<int>(c), true};
     if (spread.corner < 0 && met > 0.0 &&
         std::abs(d) < frame.offset_fit->spreadDistance(static_cast<int>(c), side, met)) {
@@ -494,12 +481,12 @@ InnerCorner innerCornerOf(const ContourFrame& frame, const ContourWave& wave, st
 void limitOnCorners(const ContourFrame& frame, ContourWave& wave) {
   const detail::OffsetFit::Offset offset = WaveProfile(wave);
   for (int pass = 0; pass < 2; ++pass) {
-    const std::vector<Point2> targets = frame.offset_fit->cornerTargets(offset);
-    const std::vector<std::pair<double, double>> stretches = swallowedStretches(frame, offset);
+    const detail::OffsetFit::CornerPassage passage = frame.offset_fit->cornerPassage(offset);
+    const std::vector<Point2>& targets = passage.targets;
     for (std::size_t i = 0; i + 1 < wave.parameters.size(); ++i) {
       int c = wave.on_corner[i];
       if (c < 0) {
-        const InnerCorner inner = innerCornerOf(frame, wave, i, stretches);
+        const InnerCorner inner = innerCornerOf(frame, wave, i, passage.meeting);
         if (inner.corner < 0) continue;
         wave.swallowed[i] = true;        // no constraint
         if (!inner.swallowed) continue;  // spread: its amplitude stays
@@ -541,9 +528,9 @@ std::size_t peakAt(const WaveLayout& layout, double l) {
 // points and the icon's corners; the rectangle's flanks become strips.
 BSplineCurve smoothWave(const ContourFrame& frame, const ContourWave& wave) {
   const detail::OffsetFit::Offset offset = WaveProfile(wave);
-  const std::vector<Point2> corner_targets = frame.offset_fit->cornerTargets(offset);
+  const detail::OffsetFit::CornerPassage passage = frame.offset_fit->cornerPassage(offset);
   BSplineCurve curve =
-      meetTargets(frame.offset_fit->fit(offset, corner_targets), frame, wave, corner_targets);
+      meetTargets(frame.offset_fit->fit(offset, passage), frame, wave, passage.targets);
   if (wave.layout.straight_spans.empty()) return curve;
   std::vector<Point2> points = curve.controlPoints();
   for (std::size_t k = 0; k < wave.layout.straight_spans.size(); ++k) {
@@ -659,7 +646,7 @@ std::shared_ptr<const detail::OffsetFit> adaptedFit(const BSplineCurve& original
   auto fit = std::make_shared<detail::OffsetFit>(original, table, knots, frame.corners, frame.area);
   const auto zero = [](double) { return 0.0; };
   for (int round = 0; round < kMaxRefinements; ++round) {
-    const BSplineCurve curve = fit->fit(zero, fit->cornerTargets(zero));
+    const BSplineCurve curve = fit->fit(zero, fit->cornerPassage(zero));
     std::vector<double> added;
     for (std::size_t i = 3; i + 4 < knots.size(); ++i) {
       const double a = knots[i], b = knots[i + 1];

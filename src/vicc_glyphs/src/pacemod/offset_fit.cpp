@@ -126,20 +126,22 @@ double OffsetFit::spreadDistance(int c, int side, double meeting) const {
   return std::min(kSpreadOver * meeting, side < 0 ? reach_[c].first : reach_[c].second);
 }
 
-std::vector<Point2> OffsetFit::cornerTargets(const Offset& offset) const {
-  std::vector<Point2> targets;
+OffsetFit::CornerPassage OffsetFit::cornerPassage(const Offset& offset) const {
+  CornerPassage passage{std::vector<std::pair<double, double>>(corners_.size(), {0.0, 0.0}), {}};
   for (std::size_t c = 0; c < corners_.size(); ++c) {
     const ContourCorner& corner = corners_[c];
     const double w = offset(corner.arc_length);
     if (!corner.inside(w)) {
-      targets.push_back(corner.offsetPoint(w));
+      passage.targets.push_back(corner.offsetPoint(w));
       continue;
     }
     const int i = static_cast<int>(c);
-    targets.push_back(0.5 * (sideOffset(i, -1, meetingDistance(i, -1, offset), offset) +
-                             sideOffset(i, 1, meetingDistance(i, 1, offset), offset)));
+    const double before = meetingDistance(i, -1, offset), after = meetingDistance(i, 1, offset);
+    passage.meeting[c] = {before, after};
+    passage.targets.push_back(
+        0.5 * (sideOffset(i, -1, before, offset) + sideOffset(i, 1, after, offset)));
   }
-  return targets;
+  return passage;
 }
 
 Point2 OffsetFit::cornerPath(int c, int side, double distance, double spread, double meeting,
@@ -166,20 +168,15 @@ Point2 OffsetFit::cornerPath(int c, int side, double distance, double spread, do
          w_corner * Point2(co * normal.x() - si * normal.y(), si * normal.x() + co * normal.y());
 }
 
-bspline::BSplineCurve OffsetFit::fit(const Offset& offset,
-                                     const std::vector<Point2>& corner_targets) const {
+bspline::BSplineCurve OffsetFit::fit(const Offset& offset, const CornerPassage& passage) const {
   const double end = knots_.back();
   // Per corner and side: how far the offset contour takes over (inside: from the meeting point).
-  std::vector<std::pair<double, double>> meeting(corners_.size(), {0.0, 0.0});
+  const std::vector<std::pair<double, double>>& meeting = passage.meeting;
+  const std::vector<Point2>& corner_targets = passage.targets;
   std::vector<double> needs(corners_.size(), 0.0);
   for (std::size_t c = 0; c < corners_.size(); ++c) {
     const double w = offset(corners_[c].arc_length);
-    if (corners_[c].inside(w)) {
-      const int i = static_cast<int>(c);
-      meeting[c] = {meetingDistance(i, -1, offset), meetingDistance(i, 1, offset)};
-    } else {
-      needs[c] = std::abs(w);
-    }
+    if (!corners_[c].inside(w)) needs[c] = std::abs(w);
   }
   Eigen::MatrixX2d targets(samples_.size(), 2);
   for (std::size_t i = 0; i < samples_.size(); ++i) {

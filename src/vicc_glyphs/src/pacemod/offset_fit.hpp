@@ -17,6 +17,7 @@
 
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "vicc_glyphs/bspline/arc_length.hpp"
@@ -39,10 +40,18 @@ class OffsetFit {
 
   using Offset = std::function<double(double arc_length)>;
 
-  /// Per icon corner the point where the offset contour passes it: outside the angle the
-  /// corner's offset point, inside it the place where the two sides' offsets (each by the
-  /// offset at its own arc length) reach the bisector.
-  std::vector<Point2> cornerTargets(const Offset& offset) const;
+  /// How the offset contour passes the icon corners, per corner: inside its angle how far along
+  /// the side before and the side after it the side's offset reaches the bisector
+  /// (meetingDistance; {0, 0} outside the angle), and the point where the offset contour passes
+  /// the corner: outside the angle the corner's offset point, inside it the middle of the two
+  /// sides' meeting points (each side offset by the offset at its own arc length).
+  struct CornerPassage {
+    std::vector<std::pair<double, double>> meeting;
+    std::vector<Point2> targets;
+  };
+  /// The meeting distances are the costly part (bisections along the sides): the callers take
+  /// them from here once per offset instead of asking meetingDistance again.
+  CornerPassage cornerPassage(const Offset& offset) const;
 
   /// Inside corner c's angle: how far along its side (-1 before, +1 after) the side's offset
   /// reaches the bisector (bisection up to half the way to the next corner; that distance if
@@ -54,9 +63,9 @@ class OffsetFit {
   /// it, at most half the way to the next corner.
   double spreadDistance(int c, int side, double meeting) const;
 
-  /// The fit of the contour offset by offset(l) (pixels, positive outward); `corner_targets`
-  /// from cornerTargets(offset).
-  bspline::BSplineCurve fit(const Offset& offset, const std::vector<Point2>& corner_targets) const;
+  /// The fit of the contour offset by offset(l) (pixels, positive outward); `passage` from
+  /// cornerPassage(offset).
+  bspline::BSplineCurve fit(const Offset& offset, const CornerPassage& passage) const;
 
  private:
   struct Sample {
