@@ -53,25 +53,22 @@ float above(double value) {
   return rounded < value && std::isfinite(rounded) ? nextFloat(rounded, true) : rounded;
 }
 
-// A float box that contains the segment's double box: it only preselects pairs (the crossing
-// test reads the double points; a box rounded to the nearest float could leave a cell that the
-// crossing point lies in), and half the bytes of a double box keep the buckets of a
-// high-frequency wave (tens of thousands of boxes) in the cache: `vicc_glyph modify` of the
-// brain with rectangle waves 12/10 mm, 1.2 mm, spent a third less time in the search.
-struct SegmentBox {
+// A float box that contains a chain's double box (see Chain): it only preselects pairs (the
+// crossing test reads the double points; a box rounded to the nearest float could leave a cell
+// that the crossing point lies in), and half the bytes of a double box keep the buckets in the
+// cache.
+struct ItemBox {
   // Without initialisers, so that resizing the buckets does not zero them first (they are
   // filled right after).
-  SegmentBox() {}
-  SegmentBox(SegmentRef segment, const Point2& lo, const Point2& hi)
+  ItemBox() {}
+  ItemBox(int item, const Point2& lo, const Point2& hi)
       : lo_x(below(lo.x())),
         lo_y(below(lo.y())),
         hi_x(above(hi.x())),
         hi_y(above(hi.y())),
-        line(segment.line),
-        segment(segment.segment) {}
-  SegmentRef ref() const { return {line, segment}; }
+        item(item) {}
   float lo_x, lo_y, hi_x, hi_y;
-  int line, segment;
+  int item;
 };
 
 // The cells a box touches: columns x0..x1, rows y0..y1.
@@ -79,14 +76,58 @@ struct CellRange {
   int x0, x1, y0, y1;
 };
 
-// Segments bucketed by the grid cells their bounding boxes touch (a counting sort: cell c
-// holds bucketed[start[c]] ... bucketed[start[c + 1] - 1], the boxes in increasing lo.x, so
-// that a sweep along x meets only the pairs whose x ranges overlap). Each finite segment's box
-// and cell range are made once; the arrays are the caller's, kept between searches, since a
-// high-frequency wave has tens of thousands of segments and fresh memory costs page faults.
-struct SegmentGrid {
+// A run of consecutive segments of one polyline along which x never turns back (it stays or
+// grows, or it stays or falls). Two segments of one chain that are not neighbours never cross
+// properly: their x ranges meet at most in one value, which is an end of one of them or the x
+// of a vertical line both lie on. So the search pairs chains, and walks two chains' segments in
+// the order of x (a merge), instead of bucketing every segment: a 512 px wave has tens of
+// thousands of segments but a few thousand chains.
+struct Chain {
+  int line = 0;
+  int first = 0;         ///< its first segment
+  int last = 0;          ///< its last segment (inclusive)
+  bool falling = false;  ///< x falls along it: walked from `last` back to `first`
+};
+
+// The chains of every polyline with their boxes; segments with a non-finite end belong to none.
+void collectChains(const std::vector<Polyline>& lines, double extent, std::vector<Chain>& chains,
+                   std::vector<ItemBox>& boxes) {
+  chains.clear();
+  boxes.clear();
+  for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
+    const Polyline& line = lines[l];
+    const int points = static_cast<int>(line.size());
+    for (int i = 0; i + 1 < points;) {
+      if (!line[i].allFinite() || !line[i + 1].allFinite()) {
+        ++i;
+        continue;
+      }
+      Point2 lo = line[i].cwiseMin(line[i + 1]), hi = line[i].cwiseMax(line[i + 1]);
+      int direction = (line[i + 1].x() > line[i].x()) - (line[i + 1].x() < line[i].x());
+      int j = i + 1;  // the next segment, from line[j] to line[j + 1]
+      for (; j + 1 < points && line[j + 1].allFinite(); ++j) {
+        const int step = (line[j + 1].x() > line[j].x()) - (line[j + 1].x() < line[j].x());
+        if (step != 0 && direction != 0 && step != direction) break;
+        const Point2 grown_lo = lo.cwiseMin(line[j + 1]), grown_hi = hi.cwiseMax(line[j + 1]);
+        if ((grown_hi - grown_lo).maxCoeff() > extent) break;
+        if (step != 0) direction = step;
+        lo = grown_lo;
+        hi = grown_hi;
+      }
+      boxes.emplace_back(static_cast<int>(chains.size()), lo, hi);
+      chains.push_back({l, i, j - 1, direction < 0});
+      i = j;
+    }
+  }
+}
+
+// Boxes bucketed by the grid cells they touch (a counting sort: cell c holds bucketed[start[c]]
+// ... bucketed[start[c + 1] - 1], the boxes in increasing lo.x, so that a sweep along x meets
+// only the pairs whose x ranges overlap). The arrays are the caller's, kept between searches:
+// fresh memory costs page faults.
+struct BoxGrid {
   static constexpr double kMaxCells = 1 << 22;
-  std::vector<SegmentBox>& bucketed;
+  std::vector<ItemBox>& bucketed;
   std::vector<int>& start;
   Point2 origin = Point2::Zero();
   double cell = 1.0, inverse_cell = 1.0;
@@ -100,8 +141,9 @@ struct SegmentGrid {
   }
   int column(double x) const { return index(x - origin.x(), inverse_cell, nx); }
   int row(double y) const { return index(y - origin.y(), inverse_cell, ny); }
+  long long cellOf(double x, double y) const { return row(y) * nx + column(x); }
 
-  CellRange cellsOf(const SegmentBox& box) const {
+  CellRange cellsOf(const ItemBox& box) const {
     return {column(box.lo_x), column(box.hi_x), row(box.lo_y), row(box.hi_y)};
   }
 
@@ -112,31 +154,13 @@ struct SegmentGrid {
     }
   }
 
-  // Every segment's box, skipping segments with a non-finite end.
-  static void collectBoxes(const std::vector<Polyline>& lines, std::vector<SegmentBox>& boxes) {
-    boxes.clear();
-    for (int l = 0; l < static_cast<int>(lines.size()); ++l) {
-      for (int i = 0; i + 1 < static_cast<int>(lines[l].size()); ++i) {
-        const Point2 lo = lines[l][i].cwiseMin(lines[l][i + 1]);
-        const Point2 hi = lines[l][i].cwiseMax(lines[l][i + 1]);
-        // Beyond float range the box is infinite: the search fails below (too large).
-        if (lo.allFinite() && hi.allFinite()) boxes.emplace_back(SegmentRef{l, i}, lo, hi);
-      }
-    }
-  }
-
-  SegmentGrid(const std::vector<Polyline>& lines, double min_cell, std::vector<SegmentBox>& boxes,
-              std::vector<CellRange>& ranges, std::vector<SegmentBox>& bucketed_storage,
-              std::vector<int>& start_storage)
+  BoxGrid(const std::vector<ItemBox>& boxes, double min_cell, std::vector<CellRange>& ranges,
+          std::vector<ItemBox>& bucketed_storage, std::vector<int>& start_storage)
       : bucketed(bucketed_storage), start(start_storage) {
     start.clear();
-    if (!(min_cell > 0.0) || !std::isfinite(min_cell)) {
-      throw std::invalid_argument("findCrossings: the cell size must be a finite number > 0");
-    }
-    collectBoxes(lines, boxes);
     if (boxes.empty()) return;
     Point2 lo = Point2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (const SegmentBox& box : boxes) {
+    for (const ItemBox& box : boxes) {
       lo = lo.cwiseMin(Point2(box.lo_x, box.lo_y));
       hi = hi.cwiseMax(Point2(box.hi_x, box.hi_y));
     }
@@ -167,20 +191,65 @@ struct SegmentGrid {
     for (std::size_t c = 0; c + 1 < start.size(); ++c) {
       if (start[c + 1] - start[c] < 2) continue;
       std::sort(bucketed.begin() + start[c], bucketed.begin() + start[c + 1],
-                [](const SegmentBox& a, const SegmentBox& b) { return a.lo_x < b.lo_x; });
+                [](const ItemBox& a, const ItemBox& b) { return a.lo_x < b.lo_x; });
     }
   }
 };
 
-// A crossing pair shares every cell that both bounding boxes touch; it is reported only in
-// the cell of its crossing point (clamped into both boxes against round-off), so exactly once.
-bool ownedByCell(const SegmentGrid& grid, const Point2& a0, const Point2& a1, const Point2& b0,
-                 const Point2& b1, long long cell) {
-  const Point2 lo = a0.cwiseMin(a1).cwiseMax(b0.cwiseMin(b1));
-  const Point2 hi = a0.cwiseMax(a1).cwiseMin(b0.cwiseMax(b1));
-  const Point2 point = intersection(a0, a1, b0, b1).cwiseMax(lo).cwiseMin(hi);
-  return grid.row(point.y()) * grid.nx + grid.column(point.x()) == cell;
-}
+// The proper crossings between the segments of chains a and b (different chains; `box_b`
+// contains b), appended to `crossings` with the lower (line, segment) first. Both chains'
+// segments are taken in the order of x, so that their x ranges start and end in order: a merge
+// visits every pair whose x ranges overlap.
+class ChainPairWalk {
+ public:
+  ChainPairWalk(const std::vector<Polyline>& lines, const std::vector<char>& closed)
+      : lines_(lines), closed_(closed) {}
+
+  void operator()(const Chain& a, const Chain& b, const ItemBox& box_b,
+                  std::vector<Crossing>& crossings) const {
+    const InXOrder along_a(a), along_b(b);
+    const Point2* pa = lines_[a.line].data();
+    const Point2* pb = lines_[b.line].data();
+    int from = 0;  // b's first segment (in x order) that can still meet a's current one
+    for (int i = 0; i < along_a.count; ++i) {
+      const int sa = along_a.segment(i);
+      const Point2 &a0 = pa[sa], &a1 = pa[sa + 1];
+      const double a_lo = std::min(a0.x(), a1.x()), a_hi = std::max(a0.x(), a1.x());
+      if (a_lo > box_b.hi_x) break;  // so are a's later segments
+      const double a_bottom = std::min(a0.y(), a1.y()), a_top = std::max(a0.y(), a1.y());
+      if (a_hi < box_b.lo_x || a_top < box_b.lo_y || a_bottom > box_b.hi_y) continue;
+      while (from < along_b.count && xHigh(pb, along_b.segment(from)) < a_lo) ++from;
+      for (int k = from; k < along_b.count; ++k) {
+        const int sb = along_b.segment(k);
+        const Point2 &b0 = pb[sb], &b1 = pb[sb + 1];
+        if (std::min(b0.x(), b1.x()) > a_hi) break;
+        if (a_top < std::min(b0.y(), b1.y()) || std::max(b0.y(), b1.y()) < a_bottom) continue;
+        SegmentRef p{a.line, sa}, q{b.line, sb};
+        if (std::tie(q.line, q.segment) < std::tie(p.line, p.segment)) std::swap(p, q);
+        const int segments = static_cast<int>(lines_[p.line].size()) - 1;
+        if (p.line == q.line && adjacent(segments, closed_[p.line], p.segment, q.segment)) continue;
+        if (properlyCross(a0, a1, b0, b1)) crossings.push_back({p, q});
+      }
+    }
+  }
+
+ private:
+  // A chain's segments by increasing x: the k-th is begin + step * k.
+  struct InXOrder {
+    explicit InXOrder(const Chain& chain)
+        : begin(chain.falling ? chain.last : chain.first),
+          step(chain.falling ? -1 : 1),
+          count(chain.last - chain.first + 1) {}
+    int segment(int k) const { return begin + step * k; }
+    int begin, step, count;
+  };
+  static double xHigh(const Point2* points, int segment) {
+    return std::max(points[segment].x(), points[segment + 1].x());
+  }
+
+  const std::vector<Polyline>& lines_;
+  const std::vector<char>& closed_;
+};
 
 }  // namespace
 
@@ -192,9 +261,10 @@ Point2 crossingPoint(const std::vector<Polyline>& lines, const Crossing& crossin
 }
 
 struct CrossingFinder::Buckets {
-  std::vector<SegmentBox> boxes;
+  std::vector<Chain> chains;
+  std::vector<ItemBox> boxes;
   std::vector<CellRange> ranges;
-  std::vector<SegmentBox> bucketed;
+  std::vector<ItemBox> bucketed;
   std::vector<int> start;
 };
 
@@ -206,36 +276,36 @@ std::vector<Crossing> findCrossings(const std::vector<Polyline>& lines, double c
 }
 
 std::vector<Crossing> CrossingFinder::find(const std::vector<Polyline>& lines, double cell) {
+  if (!(cell > 0.0) || !std::isfinite(cell)) {
+    throw std::invalid_argument("findCrossings: the cell size must be a finite number > 0");
+  }
   std::vector<char> closed(lines.size());
   for (std::size_t l = 0; l < lines.size(); ++l) {
     closed[l] = lines[l].size() > 1 && (lines[l].front() - lines[l].back()).norm() < 1e-9;
   }
-  const SegmentGrid grid(lines, cell, buckets_->boxes, buckets_->ranges, buckets_->bucketed,
-                         buckets_->start);
+  Buckets& b = *buckets_;
+  collectChains(lines, cell, b.chains, b.boxes);
+  const BoxGrid grid(b.boxes, cell, b.ranges, b.bucketed, b.start);
+  const ChainPairWalk walk(lines, closed);
   std::vector<Crossing> crossings;
   for (long long c = 0; c + 1 < static_cast<long long>(grid.start.size()); ++c) {
-    for (int a = grid.start[c]; a < grid.start[c + 1]; ++a) {
-      const SegmentBox& box_a = grid.bucketed[a];
-      // Densely sampled curves put many short segments into a cell: most pairs are apart. The
-      // later boxes start at or right of box_a's left edge; past its right edge none overlaps.
-      for (int b = a + 1; b < grid.start[c + 1] && grid.bucketed[b].lo_x <= box_a.hi_x; ++b) {
-        const SegmentBox& box_b = grid.bucketed[b];
+    for (int i = grid.start[c]; i < grid.start[c + 1]; ++i) {
+      const ItemBox& box_a = grid.bucketed[i];
+      // The later boxes start at or right of box_a's left edge; past its right edge none
+      // overlaps.
+      for (int j = i + 1; j < grid.start[c + 1] && grid.bucketed[j].lo_x <= box_a.hi_x; ++j) {
+        const ItemBox& box_b = grid.bucketed[j];
         if (box_a.lo_y > box_b.hi_y || box_b.lo_y > box_a.hi_y) continue;
-        // Canonical order, so that the crossing point is computed the same in every cell.
-        SegmentRef p = box_a.ref(), q = box_b.ref();
-        if (std::tie(q.line, q.segment) < std::tie(p.line, p.segment)) std::swap(p, q);
-        const int segments = static_cast<int>(lines[p.line].size()) - 1;
-        if (p.line == q.line && adjacent(segments, closed[p.line], p.segment, q.segment)) continue;
-        const Point2& a0 = lines[p.line][p.segment];
-        const Point2& a1 = lines[p.line][p.segment + 1];
-        const Point2& b0 = lines[q.line][q.segment];
-        const Point2& b1 = lines[q.line][q.segment + 1];
-        if (!properlyCross(a0, a1, b0, b1)) continue;
-        if (ownedByCell(grid, a0, a1, b0, b1, c)) crossings.push_back({p, q});
+        // A pair of boxes shares every cell both touch; it is walked only in the cell of the
+        // lower corner of their overlap (inside both), so exactly once.
+        if (grid.cellOf(std::max(box_a.lo_x, box_b.lo_x), std::max(box_a.lo_y, box_b.lo_y)) != c) {
+          continue;
+        }
+        walk(b.chains[box_a.item], b.chains[box_b.item], box_b, crossings);
       }
     }
   }
-  // A deterministic order that does not depend on the bucketing.
+  // A deterministic order that does not depend on the chains or the bucketing.
   std::sort(crossings.begin(), crossings.end(), [](const Crossing& x, const Crossing& y) {
     return std::tie(x.a.line, x.a.segment, x.b.line, x.b.segment) <
            std::tie(y.a.line, y.a.segment, y.b.line, y.b.segment);

@@ -120,6 +120,40 @@ TEST(PolygonCrossingsTest, AReusedFinderKeepsNothingOfTheSearchBefore) {
   }
 }
 
+// The search pairs runs of segments along which x does not turn back. Random walks on an
+// integer lattice make the cases such runs must get right: vertical steps (x stays) inside and
+// between runs, repeated points, collinear overlaps, runs longer than a cell and back-and-forth
+// steps; a non-finite point splits a line (its two segments count nowhere).
+TEST(PolygonCrossingsTest, LatticeWalksGiveTheExhaustiveCrossings) {
+  std::mt19937 random(23);
+  std::uniform_int_distribution<int> step(-2, 2), length(1, 6), lines_in_set(1, 4);
+  int total = 0;
+  for (int round = 0; round < 40; ++round) {
+    std::vector<Polyline> lines(lines_in_set(random));
+    for (Polyline& line : lines) {
+      Point2 at(step(random) * 5.0, step(random) * 5.0);
+      line.push_back(at);
+      for (int k = 0; k < 60; ++k) {
+        // Mostly axis-parallel runs of several unit steps, sometimes a diagonal one.
+        const Point2 direction(step(random), k % 3 == 0 ? step(random) : 0);
+        for (int n = length(random); n > 0; --n) line.push_back(at += direction);
+        if (k % 2) line.push_back(at += Point2(0, step(random)));
+      }
+      if (round % 4 == 1) line.push_back(line.front());
+      if (round % 4 == 2) line[line.size() / 2] = Point2(std::nan(""), 0.0);
+    }
+    for (const double cell : {1.0, 8.0}) {
+      const std::vector<Crossing> crossings = findCrossings(lines, cell);
+      std::set<PairKey> reported;
+      for (const Crossing& c : crossings) reported.insert(key(c.a, c.b));
+      EXPECT_EQ(reported.size(), crossings.size()) << "reported twice, round " << round;
+      EXPECT_EQ(reported, exhaustiveCrossings(lines)) << "round " << round << ", cell " << cell;
+      total += static_cast<int>(reported.size());
+    }
+  }
+  EXPECT_GT(total, 500);
+}
+
 TEST(PolygonCrossingsTest, NeighboursAndTouchingEndsDoNotCount) {
   const Polyline square{{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}};
   EXPECT_TRUE(findCrossings({square}).empty());

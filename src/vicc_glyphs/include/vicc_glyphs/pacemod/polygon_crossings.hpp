@@ -1,6 +1,8 @@
 #pragma once
 // Proper crossings between polyline segments (the polygon check for self-intersections of
-// modified contours), found with a uniform grid of segment buckets.
+// modified contours), found by pairing runs of segments along which x does not turn back (two
+// segments of one such run cross only if they are neighbours) through a uniform grid of their
+// boxes, and merging each pair's segments in the order of x.
 
 #include <memory>
 #include <vector>
@@ -22,18 +24,15 @@ struct Crossing {
 
 /// Every pair of segments that cross properly (touching end points and the neighbours within one
 /// closed polyline do not count), within one polyline and between different ones, each once,
-/// ordered by (a, b) with a < b. `cell` is the grid's smallest cell in the polylines' units; a
-/// coarser one is used where a finer grid would exceed 4M cells (same result, more pairs tried).
-/// The default suits PACEMOD's waves: the sweep along x in each cell keeps a full cell cheap, and
-/// finer cells cost more in walking a 512 px glyph's mostly empty cells (2 px: 65,536 of them per
-/// search) than they save in pairs (callgrind, bench README session 40).
+/// ordered by (a, b) with a < b. `cell` is the grid's smallest cell in the polylines' units (a
+/// coarser one is used where a finer grid would exceed 4M cells) and the largest width or height
+/// of a run's box: the same result for any cell, only the work differs. The default suits
+/// PACEMOD's waves (callgrind, bench README sessions 40 and 41: 2-16 px tried).
 /// Throws std::invalid_argument for a cell that is not > 0 or coordinates whose extent overflows.
 std::vector<Crossing> findCrossings(const std::vector<Polyline>& lines, double cell = 8.0);
 
 /// findCrossings with its buckets kept between calls: the polygon check searches the same
-/// contours again in every repair round, and buckets of tens of thousands of segments (the brain
-/// with rectangle waves at 12 waves/10 mm, 1.2 mm: 16,600 as drawn, 68,300 at 16 points per
-/// span) in fresh memory cost a page fault per 4 KiB, as much as the search itself.
+/// contours again in every repair round, and fresh memory costs a page fault per 4 KiB.
 class CrossingFinder {
  public:
   CrossingFinder();
