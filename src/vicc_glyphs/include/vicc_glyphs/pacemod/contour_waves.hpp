@@ -90,7 +90,8 @@ ContourFrame contourFrame(const bspline::BSplineCurve& original,
 /// searches), kept from one modifyContour call to the next: the repair rounds rebuild a contour
 /// on the same frame with the same amplitude and guard, with new caps on a few knot points, and
 /// a knot point's verdict depends on its own cap only. Starts afresh when the frame, the
-/// amplitude or the guard change. One per contour; not for concurrent calls.
+/// amplitude or the guard change (frame and guard compared by address: they must stay alive,
+/// unchanged, while their verdicts are kept). One per contour; not for concurrent calls.
 class GuardVerdicts {
  public:
   GuardVerdicts();
