@@ -89,6 +89,9 @@ struct Chain {
   bool falling = false;  ///< x falls along it: walked from `last` back to `first`
 };
 
+// -1, 0 or +1: whether x falls, stays or grows from a to b.
+int xStep(const Point2& a, const Point2& b) { return (b.x() > a.x()) - (b.x() < a.x()); }
+
 // The chains of every polyline with their boxes; segments with a non-finite end belong to none.
 void collectChains(const std::vector<Polyline>& lines, double extent, std::vector<Chain>& chains,
                    std::vector<ItemBox>& boxes) {
@@ -103,10 +106,10 @@ void collectChains(const std::vector<Polyline>& lines, double extent, std::vecto
         continue;
       }
       Point2 lo = line[i].cwiseMin(line[i + 1]), hi = line[i].cwiseMax(line[i + 1]);
-      int direction = (line[i + 1].x() > line[i].x()) - (line[i + 1].x() < line[i].x());
+      int direction = xStep(line[i], line[i + 1]);
       int j = i + 1;  // the next segment, from line[j] to line[j + 1]
       for (; j + 1 < points && line[j + 1].allFinite(); ++j) {
-        const int step = (line[j + 1].x() > line[j].x()) - (line[j + 1].x() < line[j].x());
+        const int step = xStep(line[j], line[j + 1]);
         if (step != 0 && direction != 0 && step != direction) break;
         const Point2 grown_lo = lo.cwiseMin(line[j + 1]), grown_hi = hi.cwiseMax(line[j + 1]);
         if ((grown_hi - grown_lo).maxCoeff() > extent) break;
