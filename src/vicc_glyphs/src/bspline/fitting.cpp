@@ -102,8 +102,7 @@ Eigen::MatrixX2d CubicLeastSquares::solve(const Eigen::MatrixX2d& targets) const
       y[row.first_index + a] += row.values[a] * py;
     }
   }
-  factor_.solve(x.data());
-  factor_.solve(y.data());
+  factor_.solve(x.data(), y.data());
   Eigen::MatrixX2d control(control_count_, 2);
   for (int j = 0; j < control_count_; ++j) control.row(j) << x[j], y[j];
   return control;

@@ -43,17 +43,42 @@ void BandedCholesky::factorise() {
   }
 }
 
-void BandedCholesky::solve(double* x) const {
+template <int kCount>
+void BandedCholesky::solveColumns(double* const* columns) const {
+  double sum[kCount];
   for (int i = 0; i < n_; ++i) {  // L y = b
-    double sum = x[i];
-    for (int k = std::max(0, i - bandwidth_); k < i; ++k) sum -= factorEntry(i, k) * x[k];
-    x[i] = sum / factorEntry(i, i);
+    for (int c = 0; c < kCount; ++c) sum[c] = columns[c][i];
+    for (int k = std::max(0, i - bandwidth_); k < i; ++k) {
+      const double entry = factorEntry(i, k);
+      for (int c = 0; c < kCount; ++c) sum[c] -= entry * columns[c][k];
+    }
+    const double pivot = factorEntry(i, i);
+    for (int c = 0; c < kCount; ++c) columns[c][i] = sum[c] / pivot;
   }
   for (int i = n_ - 1; i >= 0; --i) {  // L^T x = y
-    double sum = x[i];
-    for (int k = i + 1; k <= std::min(n_ - 1, i + bandwidth_); ++k) sum -= factorEntry(k, i) * x[k];
-    x[i] = sum / factorEntry(i, i);
+    for (int c = 0; c < kCount; ++c) sum[c] = columns[c][i];
+    for (int k = i + 1; k <= std::min(n_ - 1, i + bandwidth_); ++k) {
+      const double entry = factorEntry(k, i);
+      for (int c = 0; c < kCount; ++c) sum[c] -= entry * columns[c][k];
+    }
+    const double pivot = factorEntry(i, i);
+    for (int c = 0; c < kCount; ++c) columns[c][i] = sum[c] / pivot;
   }
+}
+
+void BandedCholesky::solve(double* x) const {
+  double* const columns[] = {x};
+  solveColumns<1>(columns);
+}
+
+void BandedCholesky::solve(double* x, double* y) const {
+  double* const columns[] = {x, y};
+  solveColumns<2>(columns);
+}
+
+void BandedCholesky::solve(double* x, double* y, double* z) const {
+  double* const columns[] = {x, y, z};
+  solveColumns<3>(columns);
 }
 
 }  // namespace vicc_glyphs::numerics

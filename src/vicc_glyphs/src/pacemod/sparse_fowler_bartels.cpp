@@ -100,8 +100,7 @@ bspline::BSplineCurve sparseFowlerBartels(
     x[i] = row(i).offset.x();
     y[i] = row(i).offset.y();
   }
-  gram.solve(x.data());
-  gram.solve(y.data());
+  gram.solve(x.data(), y.data());
   std::vector<Point2> points = curve.controlPoints();
   for (int i = 0; i < count; ++i) {
     const bspline::BasisRow& basis = row(i).basis;

@@ -1159,7 +1159,7 @@ class Multigrid {
       }
     }
     coarsest_.factorise();
-    coarsest_values_.resize(n);
+    coarsest_values_.resize(static_cast<size_t>(n) * C);
   }
 
   // Solves the coarsest level exactly, per channel.
@@ -1178,11 +1178,20 @@ class Multigrid {
     for (int k = 0; k < n; ++k) {
       if (l > 0 || unknown(pixel(k))) u[pixel(k)] = Px{};
     }
+    // The channels one after the other in coarsest_values_, solved together.
+    const auto values = [&](int c) { return coarsest_values_.data() + static_cast<size_t>(c) * n; };
     for (int c = 0; c < C; ++c) {
-      for (int k = 0; k < n; ++k) coarsest_values_[k] = channel(f[pixel(k)], c);
-      coarsest_.solve(coarsest_values_.data());
+      for (int k = 0; k < n; ++k) values(c)[k] = channel(f[pixel(k)], c);
+    }
+    if constexpr (C == 3) {
+      coarsest_.solve(values(0), values(1), values(2));
+    } else {
+      static_assert(C == 1, "one or three channels");
+      coarsest_.solve(values(0));
+    }
+    for (int c = 0; c < C; ++c) {
       for (int k = 0; k < n; ++k) {
-        if (unknown(pixel(k))) setChannel(u[pixel(k)], c, static_cast<float>(coarsest_values_[k]));
+        if (unknown(pixel(k))) setChannel(u[pixel(k)], c, static_cast<float>(values(c)[k]));
       }
     }
   }

@@ -78,5 +78,36 @@ TEST(BandedCholeskyTest, RaisesAndCountsPivotsOfASingularMatrix) {
   EXPECT_EQ(cholesky.raisedPivots(), 1);
 }
 
+TEST(BandedCholeskyTest, SolvesSeveralRightHandSidesExactlyAsOneByOne) {
+  // The fits solve x and y together and the renderer its three channels: each column must get
+  // the same bits as its own solve (the glyphs' outputs are compared byte for byte).
+  const int n = 40, band = 6;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  BandedCholesky cholesky;
+  cholesky.reset(n, band);
+  for (int i = 0; i < n; ++i) {
+    for (int j = std::max(0, i - band); j < i; ++j) cholesky.lower(i, j) = entry(random);
+    cholesky.lower(i, i) = 2.0 * band + 1.0;  // diagonally dominant
+  }
+  cholesky.factorise();
+  ASSERT_EQ(cholesky.raisedPivots(), 0);
+  std::vector<std::vector<double>> columns(3, std::vector<double>(n));
+  for (auto& column : columns) {
+    for (double& value : column) value = entry(random);
+  }
+  std::vector<std::vector<double>> alone = columns, pair = columns, triple = columns;
+  for (auto& column : alone) cholesky.solve(column.data());
+  cholesky.solve(pair[0].data(), pair[1].data());
+  cholesky.solve(triple[0].data(), triple[1].data(), triple[2].data());
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NE(alone[c], columns[c]);
+    EXPECT_EQ(triple[c], alone[c]) << "column " << c;  // bitwise: vector<double> ==
+    if (c < 2) {
+      EXPECT_EQ(pair[c], alone[c]) << "column " << c;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace vicc_glyphs::numerics

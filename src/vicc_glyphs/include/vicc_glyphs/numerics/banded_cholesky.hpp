@@ -31,6 +31,11 @@ class BandedCholesky {
   double smallestPivot() const { return smallest_pivot_; }
   /// Solves A x = b in place (x holds b on entry), n values.
   void solve(double* x) const;
+  /// Solves for two (three) right-hand sides at once, each with exactly the operations of
+  /// solve(): the substitutions' chains of dependent divisions then overlap instead of running
+  /// one after the other (the fits' x and y, the renderer's colour channels).
+  void solve(double* x, double* y) const;
+  void solve(double* x, double* y, double* z) const;
   int size() const { return n_; }
   int bandwidth() const { return bandwidth_; }
 
@@ -38,6 +43,9 @@ class BandedCholesky {
   double factorEntry(int row, int column) const {
     return factor_[static_cast<std::size_t>(row) * (bandwidth_ + 1) + (column - row + bandwidth_)];
   }
+
+  template <int kCount>
+  void solveColumns(double* const* columns) const;
 
   int n_ = 0;
   int bandwidth_ = 0;
