@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 namespace vicc_glyphs::multigrid_detail {
@@ -82,6 +83,9 @@ void centreWeightsOfCell(const Op& fine, int i, int j, const CellWeights& south_
   const int centre = fine.index(2 * i + 1, 2 * j + 1);
   if (!fine.isFree(centre)) return;
   const Stencil a = fine.row(centre);
+  // A free point without links has no equation to interpolate from (1 / 0 would make the
+  // weights NaN): its correction stays 0. The assembler makes such pixels Dirichlet pixels.
+  if (!(a[kC] > 0.0f)) return;
   const float inverse = 1.0f / a[kC];
   float nw = -(a[kNW] + a[kN] * cell.x_west + a[kW] * cell.y_north) * inverse;
   float ne = -(a[kNE] + a[kN] * cell.x_east + a[kE] * east_cell.y_north) * inverse;
@@ -122,6 +126,11 @@ ForwardCouplings galerkinCouplings(const Op& fine, const Cells& cells, int i, in
   };
   const Stencil own = columnAt(i, j);
   if (own[kC] == 0.0f) return {};
+  // Level 0's rows are 5-point stencils, so A P e_I reaches only 2 fine points out there. The
+  // products with their corners and with the entries 3 out are +0 (finite, non-negative
+  // weights; a sum from +0 never becomes -0) and are left out: the same bits, fewer products.
+  constexpr bool kFivePoint = std::is_same_v<Op, FineLevel>;
+  constexpr int kReach = kFivePoint ? 2 : 3;
   float applied[7][7] = {};  // A P e_I at fine offsets -3..3 (rows, columns) from (2i, 2j)
   for (int dy = -1; dy <= 1; ++dy) {
     for (int dx = -1; dx <= 1; ++dx) {
@@ -130,6 +139,7 @@ ForwardCouplings galerkinCouplings(const Op& fine, const Cells& cells, int i, in
       const Stencil a = fine.row(fine.index(2 * i + dx, 2 * j + dy));
       for (int ey = -1; ey <= 1; ++ey) {
         for (int ex = -1; ex <= 1; ++ex) {
+          if (kFivePoint && ey != 0 && ex != 0) continue;
           applied[3 + dy + ey][3 + dx + ex] += a[(ey + 1) * 3 + ex + 1] * weight;
         }
       }
@@ -141,7 +151,7 @@ ForwardCouplings galerkinCouplings(const Op& fine, const Cells& cells, int i, in
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
         const int y = 3 + 2 * dj + dy, x = 3 + 2 * di + dx;
-        if (x < 0 || x > 6 || y < 0 || y > 6) continue;
+        if (x < 3 - kReach || x > 3 + kReach || y < 3 - kReach || y > 3 + kReach) continue;
         sum += other[(dy + 1) * 3 + dx + 1] * applied[y][x];
       }
     }
