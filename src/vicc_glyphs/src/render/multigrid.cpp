@@ -299,17 +299,17 @@ class Multigrid {
       }
       if (denominator > 0.0f) u[p] = sum / denominator;
     };
+    // Only the cells worked out point by point can have other weights (the rest are bilinear).
     for (int pass = 0; pass < 2; ++pass) {
-      for (int j = 0; j < coarse.height; ++j) {
-        for (int i = 0; i < coarse.width; ++i) {
-          if (isBilinear(transfer[coarse.index(i, j)])) continue;
-          const int corner = fine_.index(2 * i, 2 * j);
-          if (pass == 0) {
-            if (2 * i + 1 < fine_.width) extend(corner + 1, kUp | kDown);
-            if (2 * j + 1 < fine_.height) extend(corner + s, kLeft | kRight);
-          } else if (2 * i + 1 < fine_.width && 2 * j + 1 < fine_.height) {
-            extend(corner + s + 1, 0);
-          }
+      for (const int c : coarse.worked_out_cells) {
+        if (isBilinear(transfer[c])) continue;
+        const int i = c % coarse.stride - 1, j = c / coarse.stride - 1;
+        const int corner = fine_.index(2 * i, 2 * j);
+        if (pass == 0) {
+          if (2 * i + 1 < fine_.width) extend(corner + 1, kUp | kDown);
+          if (2 * j + 1 < fine_.height) extend(corner + s, kLeft | kRight);
+        } else if (2 * i + 1 < fine_.width && 2 * j + 1 < fine_.height) {
+          extend(corner + s + 1, 0);
         }
       }
     }

@@ -273,11 +273,13 @@ void coarsenLevel(const Op& fine, const Stencil& regular_fine, Transfer& transfe
   markIrregular(fine, regular_fine, coarse, scratch, irregular_cells, irregular_rows);
   transfer.resize(coarse.size);
   std::fill(transfer.begin(), transfer.end(), CellWeights{});
+  coarse.worked_out_cells.clear();
   for (int j = 0; j < ch; ++j) {
     for (int i = 0; i < cw; ++i) {
       const int c = coarse.index(i, j);
       if (irregular_cells[c]) {
         edgeWeightsOfCell(fine, i, j, transfer[c]);
+        coarse.worked_out_cells.push_back(c);
       } else {
         transfer[c] = kBilinearCell;
       }

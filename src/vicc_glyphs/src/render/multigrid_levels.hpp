@@ -95,6 +95,10 @@ struct CoarseLevel {
   // that one (the smoother's fast path; 0 in the ghost border).
   Stencil regular_stencil{};
   render_detail::PixelVector<std::uint8_t> regular;
+  // The cells (indices like the points) whose prolongation weights from this level to the finer
+  // one were worked out point by point, in increasing order; every other cell's are
+  // kBilinearCell.
+  std::vector<int> worked_out_cells;
 
   int index(int x, int y) const { return (y + 1) * stride + x + 1; }
   bool isFree(int p) const { return centre[p] > 0.0f; }
