@@ -9,6 +9,18 @@
 namespace vicc_glyphs {
 namespace bspline {
 
+ConstraintRow constraintRow(const BSplineCurve& curve, const CurveConstraint& constraint,
+                            std::size_t index, const char* caller) {
+  const CurveConstraint& c = constraint;
+  if (!std::isfinite(c.parameter) || c.parameter < curve.domainBegin() ||
+      c.parameter > curve.domainEnd() || !c.target.allFinite() || c.derivative_order < 0) {
+    throw std::invalid_argument(std::string(caller) + ": constraint " + std::to_string(index) +
+                                " is not finite, outside the domain or has a negative order");
+  }
+  return {curve.basisAt(c.parameter, c.derivative_order),
+          c.target - curve.derivativeAt(c.parameter, c.derivative_order)};
+}
+
 BSplineCurve fowlerBartelsModify(const BSplineCurve& curve,
                                  const std::vector<CurveConstraint>& constraints) {
   if (constraints.empty()) return curve;
@@ -16,15 +28,9 @@ BSplineCurve fowlerBartelsModify(const BSplineCurve& curve,
   Eigen::MatrixXd n = Eigen::MatrixXd::Zero(rows, curve.controlPointCount());
   Eigen::MatrixX2d offsets(rows, 2);
   for (int i = 0; i < rows; ++i) {
-    const CurveConstraint& c = constraints[i];
-    if (!std::isfinite(c.parameter) || c.parameter < curve.domainBegin() ||
-        c.parameter > curve.domainEnd() || !c.target.allFinite() || c.derivative_order < 0) {
-      throw std::invalid_argument("fowlerBartelsModify: constraint " + std::to_string(i) +
-                                  " is not finite, outside the domain or has a negative order");
-    }
-    const BasisRow row = curve.basisAt(c.parameter, c.derivative_order);
-    n.block(i, row.first_index, 1, row.values.size()) = row.values.transpose();
-    offsets.row(i) = (c.target - curve.derivativeAt(c.parameter, c.derivative_order)).transpose();
+    const ConstraintRow row = constraintRow(curve, constraints[i], i, "fowlerBartelsModify");
+    n.block(i, row.basis.first_index, 1, row.basis.values.size()) = row.basis.values.transpose();
+    offsets.row(i) = row.offset.transpose();
   }
   Eigen::FullPivLU<Eigen::MatrixXd> rank_check(n);
   if (rank_check.rank() < rows) {

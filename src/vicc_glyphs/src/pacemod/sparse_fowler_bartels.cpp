@@ -12,25 +12,14 @@ namespace vicc_glyphs {
 namespace pacemod {
 namespace {
 
-// One constraint's row of N (degree + 1 values from first_index on) and its target offset.
-struct ConstraintRow {
-  bspline::BasisRow basis;
-  Point2 offset;
-};
+using bspline::ConstraintRow;
 
 std::vector<ConstraintRow> constraintRows(
     const bspline::BSplineCurve& curve, const std::vector<bspline::CurveConstraint>& constraints) {
   std::vector<ConstraintRow> rows;
   rows.reserve(constraints.size());
   for (std::size_t i = 0; i < constraints.size(); ++i) {
-    const bspline::CurveConstraint& c = constraints[i];
-    if (!std::isfinite(c.parameter) || c.parameter < curve.domainBegin() ||
-        c.parameter > curve.domainEnd() || !c.target.allFinite() || c.derivative_order < 0) {
-      throw std::invalid_argument("sparseFowlerBartels: constraint " + std::to_string(i) +
-                                  " is not finite, outside the domain or has a negative order");
-    }
-    rows.push_back({curve.basisAt(c.parameter, c.derivative_order),
-                    c.target - curve.derivativeAt(c.parameter, c.derivative_order)});
+    rows.push_back(bspline::constraintRow(curve, constraints[i], i, "sparseFowlerBartels"));
   }
   return rows;
 }
