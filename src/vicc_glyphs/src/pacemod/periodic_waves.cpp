@@ -182,17 +182,15 @@ void capAround(WavedContour& contour, double u, bool last_round) {
     return std::min(contour.caps[i], contour.wave->guarded[i].amplitude);
   };
   double window = half_period;
+  std::vector<std::size_t> near;
   for (;;) {
-    bool reducible = false;
-    for (std::size_t i = 0; i < layout.peaks.size(); ++i) {
-      reducible |= cyclicDistance(layout.peaks[i].arc_length, u, layout.length) <= window &&
-                   applied(i) > 0.0;
-    }
+    peaksNear(layout, u, window, near);
+    const bool reducible =
+        std::any_of(near.begin(), near.end(), [&](std::size_t i) { return applied(i) > 0.0; });
     if (reducible || window >= 0.5 * layout.length) break;
     window += half_period;
   }
-  for (std::size_t i = 0; i < layout.peaks.size(); ++i) {
-    if (cyclicDistance(layout.peaks[i].arc_length, u, layout.length) > window) continue;
+  for (const std::size_t i : near) {
     contour.caps[i] = last_round ? 0.0 : std::min(contour.caps[i], 0.5 * applied(i));
   }
   contour.caps.back() = contour.caps.front() = std::min(contour.caps.front(), contour.caps.back());

@@ -1,7 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <random>
 #include <stdexcept>
+#include <vector>
 
+#include "vicc_glyphs/pacemod/polyline.hpp"
 #include "vicc_glyphs/pacemod/wave_layout.hpp"
 
 namespace vicc_glyphs {
@@ -105,6 +108,39 @@ TEST(WaveLayoutTest, WaveformNamesRoundTripAndSpecsAreValidated) {
   EXPECT_EQ(validate(WaveSpec{Waveform::Sine, 0.2, 0.5}), "");
   EXPECT_NE(validate(WaveSpec{Waveform::Sine, 0.2, -0.1}).find("amplitude_mm"), std::string::npos);
   EXPECT_NE(validate(WaveSpec{Waveform::Sine, 0.0, 0.1}).find("waves_per_mm"), std::string::npos);
+}
+
+TEST(WaveLayoutTest, PeaksNearAreThoseAScanOfAllFinds) {
+  // The repair rounds cap the knot points around a crossing through peaksNear: it must give
+  // exactly the peaks that testing every one gives, around the closing point too.
+  std::mt19937 random(5);
+  for (const Waveform waveform : {Waveform::Sine, Waveform::Rectangle, Waveform::Sawtooth}) {
+    for (const double length : {37.0, 1000.0 / 3.0, 4096.25}) {
+      const WaveLayout layout = waveLayout(waveform, 7 + static_cast<int>(length) % 11, length);
+      const double half_period = 0.5 * length / layout.wave_count;
+      std::vector<double> places{0.0, length, 1e-12, length - 1e-12};
+      std::uniform_real_distribution<double> along(0.0, length);
+      for (int k = 0; k < 200; ++k) places.push_back(along(random));
+      for (const WavePeak& peak : layout.peaks) places.push_back(peak.arc_length);
+      std::vector<std::size_t> near;
+      for (const double u : places) {
+        for (const double window : {0.0, 1e-9, 0.3 * half_period, half_period, 2.5 * half_period,
+                                    0.49 * length, 0.5 * length, length}) {
+          // Windows that end exactly on a peak, too.
+          for (const double w : {window, std::abs(layout.peaks[1].arc_length - u)}) {
+            std::vector<std::size_t> expected;
+            for (std::size_t i = 0; i < layout.peaks.size(); ++i) {
+              if (cyclicDistance(layout.peaks[i].arc_length, u, length) <= w) {
+                expected.push_back(i);
+              }
+            }
+            peaksNear(layout, u, w, near);
+            ASSERT_EQ(near, expected) << "L " << length << " u " << u << " window " << w;
+          }
+        }
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 // Sign +1 means along the outward normal; the wave starts outward at arc length 0, and as the
 // count is whole it ends there again, so the contour stays closed.
 
+#include <cstddef>
 #include <vector>
 
 #include "vicc_glyphs/pacemod/wave_spec.hpp"
@@ -64,6 +65,14 @@ std::vector<double> knotVector(const WaveLayout& layout, bool single_knots = fal
 
 /// The whole wave count for a closed contour: round(waves_per_unit * length), maybe 0.
 int wholeWaveCount(double waves_per_unit, double length);
+
+/// The peaks within `window` of arc length `u` along the closed contour (cyclicDistance of
+/// their arc length and u at most `window`), as increasing indices into layout.peaks, written
+/// to `indices` (cleared first). A binary search over the sorted peaks finds the candidates a
+/// hair beyond the window (against round-off); each gets the same test a scan of all would
+/// give, which it also falls back to for a window of half the length or more.
+void peaksNear(const WaveLayout& layout, double u, double window,
+               std::vector<std::size_t>& indices);
 
 }  // namespace pacemod
 }  // namespace vicc_glyphs
