@@ -178,10 +178,11 @@ Point2 BSplineCurve::derivativeAt(double u, int order) const {
 
 Point2 BSplineCurve::evaluateOn(double v, int span, int order) const {
   const auto first = control_points_.begin() + (span - degree_);
-  if (degree_ == 3 && order == 0) {  // the common case: cubic curve points
+  if (degree_ == 3 && order <= 1) {  // the common cases: cubic curve points and tangents
     std::array<Point2, 4> local;
     std::copy(first, first + 4, local.begin());
-    return evaluateOnSpan<3, 0>(knots_, 3, span, local.data(), v, 0);
+    return order == 0 ? evaluateOnSpan<3, 0>(knots_, 3, span, local.data(), v, 0)
+                      : evaluateOnSpan<3, 1>(knots_, 3, span, local.data(), v, 1);
   }
   // Curves are evaluated millions of times per glyph: no heap allocation for usual degrees.
   if (degree_ <= kStackDegree) {
