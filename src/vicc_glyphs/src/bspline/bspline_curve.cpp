@@ -127,10 +127,7 @@ void BSplineCurve::validate() const {
   }
 }
 
-double BSplineCurve::clampToDomain(double u) const {
-  if (!std::isfinite(u)) fail("curve parameter is not finite");
-  return std::clamp(u, domainBegin(), domainEnd());
-}
+void BSplineCurve::failNotFinite() { fail("curve parameter is not finite"); }
 
 int knotSpan(const std::vector<double>& knots, int control_point_count, double v) {
   const int n = control_point_count - 1;

@@ -58,11 +58,6 @@ int flatteningPieces(const Point2* b, bool beside_fold, const Flattening& flatte
   return static_cast<int>(std::min(pieces, static_cast<double>(flattening.max_pieces)));
 }
 
-Point2 bezierPoint(const Point2* b, double t) {
-  const double u = 1.0 - t;
-  return u * u * u * b[0] + 3.0 * u * u * t * b[1] + 3.0 * u * t * t * b[2] + t * t * t * b[3];
-}
-
 std::vector<Point2> flattenCurve(const DiffusionCurve& curve, std::vector<double>* positions,
                                  const Flattening& flattening) {
   std::vector<Point2> points;

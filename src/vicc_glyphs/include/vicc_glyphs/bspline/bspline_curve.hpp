@@ -4,6 +4,8 @@
 // the domain [t_p, t_{n+1}]. Coordinates follow diffusion_curve.hpp (pixels, y down).
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -97,7 +99,13 @@ class BSplineCurve {
 
  private:
   void validate() const;
-  double clampToDomain(double u) const;
+  // Inline: called per point of every sampling (a call through the library's PLT cost more
+  // than the clamp).
+  double clampToDomain(double u) const {
+    if (!std::isfinite(u)) failNotFinite();
+    return std::clamp(u, domainBegin(), domainEnd());
+  }
+  [[noreturn]] static void failNotFinite();
   /// findSpan(v) for a v in the domain not below the one whose span was `span` (-1: none yet).
   int nextSpan(double v, int span) const;
   /// derivativeAt for a v in the domain whose knot span findSpan(v) is `span`.

@@ -43,8 +43,12 @@ std::vector<char> segmentsBesideFolds(const std::vector<Point2>& chain);
 /// segmentsBesideFolds of `curve`'s control points, for segment k (false out of range).
 bool segmentBesideFold(const DiffusionCurve& curve, int k);
 
-/// The Bezier point of b[0] .. b[3] at t in [0, 1].
-Point2 bezierPoint(const Point2* b, double t);
+/// The Bezier point of b[0] .. b[3] at t in [0, 1]. Inline: called per point of every
+/// flattening and sampling, from other libraries too.
+inline Point2 bezierPoint(const Point2* b, double t) {
+  const double u = 1.0 - t;
+  return u * u * u * b[0] + 3.0 * u * u * t * b[1] + 3.0 * u * t * t * b[2] + t * t * t * b[3];
+}
 
 /// `curve`'s Bezier segments flattened as the renderer draws them at scale 1 (uniform steps per
 /// segment, flatteningPieces each, the first point of the curve included once); the curve
