@@ -14,7 +14,7 @@ add_library(vicc_glyphs_bspline
   src/bspline/elspia.cpp
   src/bspline/fowler_bartels.cpp
 )
-target_compile_options(vicc_glyphs_bspline PRIVATE ${VICC_WARNINGS})
+target_compile_options(vicc_glyphs_bspline PRIVATE ${VICC_WARNINGS} ${VICC_NO_INTERPOSITION})
 target_link_libraries(vicc_glyphs_bspline vicc_glyphs_dci vicc_glyphs_numerics)
 
 install(TARGETS vicc_glyphs_bspline

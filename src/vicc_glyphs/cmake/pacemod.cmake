@@ -29,7 +29,7 @@ add_library(vicc_glyphs_pacemod
   src/pacemod/dashes.cpp
   src/pacemod/inflate.cpp
 )
-target_compile_options(vicc_glyphs_pacemod PRIVATE ${VICC_WARNINGS})
+target_compile_options(vicc_glyphs_pacemod PRIVATE ${VICC_WARNINGS} ${VICC_NO_INTERPOSITION})
 target_include_directories(vicc_glyphs_pacemod SYSTEM PUBLIC ${OpenCV_INCLUDE_DIRS})
 target_include_directories(vicc_glyphs_pacemod SYSTEM PRIVATE ${VICC_GLYPHS_POLYCLIPPING_INCLUDE_DIRS})
 target_link_libraries(vicc_glyphs_pacemod vicc_glyphs_bspline vicc_glyphs_dci ${VICC_GLYPHS_OPENCV}
