@@ -21,9 +21,10 @@ struct CurveConstraint {
 
 /// A constraint's row of N (the basis functions, or their derivatives of its order, at its
 /// parameter) and the offset Delta P the curve has to move by there (the target minus the
-/// curve's value). Throws std::invalid_argument, naming `caller` and the constraint's `index`,
-/// for a non-finite or out-of-domain parameter, a non-finite target or a negative order. Shared
-/// by fowlerBartelsModify and PACEMOD's banded solve of the same equations.
+/// curve's value, or its derivative of that order). Throws std::invalid_argument, naming `caller`
+/// and the constraint's `index`, for a non-finite or out-of-domain parameter, a non-finite target
+/// or a negative order. Shared by fowlerBartelsModify and PACEMOD's banded solve of the same
+/// equations.
 struct ConstraintRow {
   BasisRow basis;
   Point2 offset = Point2::Zero();

@@ -31,9 +31,9 @@ class BandedCholesky {
   double smallestPivot() const { return smallest_pivot_; }
   /// Solves A x = b in place (x holds b on entry), n values.
   void solve(double* x) const;
-  /// Solves for two (three) right-hand sides at once, each with exactly the operations of
-  /// solve(): the substitutions' chains of dependent divisions then overlap instead of running
-  /// one after the other (the fits' x and y, the renderer's colour channels).
+  /// Solves for two (three) right-hand sides in distinct arrays at once, each with exactly the
+  /// operations of solve(): the substitutions' chains of dependent divisions then overlap
+  /// instead of running one after the other (the fits' x and y, the renderer's colour channels).
   void solve(double* x, double* y) const;
   void solve(double* x, double* y, double* z) const;
   int size() const { return n_; }
