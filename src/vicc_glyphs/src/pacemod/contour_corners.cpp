@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "vicc_glyphs/pacemod/polyline.hpp"
+
 namespace vicc_glyphs {
 namespace pacemod {
 namespace {
@@ -58,35 +60,8 @@ double ContourCorner::bisectorOffsetAt(double d) const {
 
 std::array<std::pair<int, int>, 3> cornerIndexRangesNear(const std::vector<ContourCorner>& corners,
                                                          double l, double reach, double length) {
-  const int count = static_cast<int>(corners.size());
-  std::array<std::pair<int, int>, 3> ranges{};
-  // A little wider than asked, so that round-off in the callers' distances cannot lose a corner.
-  const double r = reach + 1e-9 * (std::abs(reach) + std::abs(l) + length) + 1e-12;
-  if (!(r < 0.5 * length)) {  // also for NaN
-    ranges[0] = {0, count};
-    return ranges;
-  }
-  const auto first_at_or_above = [&](double a) {
-    return static_cast<int>(std::lower_bound(corners.begin(), corners.end(), a,
-                                             [](const ContourCorner& c, double value) {
-                                               return c.arc_length < value;
-                                             }) -
-                            corners.begin());
-  };
-  const auto first_above = [&](double a) {
-    return static_cast<int>(std::upper_bound(corners.begin(), corners.end(), a,
-                                             [](double value, const ContourCorner& c) {
-                                               return value < c.arc_length;
-                                             }) -
-                            corners.begin());
-  };
-  const double low = l - r, high = l + r;
-  // Past `length` the window continues at 0, before 0 at `length`.
-  if (high >= length) ranges[0] = {0, first_above(high - length)};
-  ranges[1] = {std::max(ranges[0].second, first_at_or_above(low)), first_above(high)};
-  if (low <= 0.0) ranges[2] = {std::max(ranges[1].second, first_at_or_above(low + length)), count};
-  ranges[1].second = std::max(ranges[1].first, ranges[1].second);
-  return ranges;
+  return indexRangesNear(corners, l, reach, length,
+                         [](const ContourCorner& corner) { return corner.arc_length; });
 }
 
 std::vector<int> nearestCorners(const std::vector<ContourCorner>& corners,

@@ -123,30 +123,11 @@ void peaksNear(const WaveLayout& layout, double u, double window,
                std::vector<std::size_t>& indices) {
   indices.clear();
   const std::vector<WavePeak>& peaks = layout.peaks;
-  const double length = layout.length;
-  // Peaks with arc length in [from, to] that pass the test.
-  const auto scan = [&](double from, double to) {
-    auto at = std::lower_bound(
-        peaks.begin(), peaks.end(), from,
-        [](const WavePeak& peak, double value) { return peak.arc_length < value; });
-    for (; at != peaks.end() && at->arc_length <= to; ++at) {
-      if (cyclicDistance(at->arc_length, u, length) <= window) {
-        indices.push_back(static_cast<std::size_t>(at - peaks.begin()));
-      }
+  for (const auto& [first, second] : indexRangesNear(
+           peaks, u, window, layout.length, [](const WavePeak& peak) { return peak.arc_length; })) {
+    for (int i = first; i < second; ++i) {
+      if (cyclicDistance(peaks[i].arc_length, u, layout.length) <= window) indices.push_back(i);
     }
-  };
-  const double margin = 1e-9 * length + 1e-9;
-  const double low = u - window - margin, high = u + window + margin;
-  if (!(high - low < length) || !(low > -length) || !(high < 2.0 * length)) {
-    scan(-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity());
-  } else if (low < 0.0) {  // around the closing point: the end's peaks after the start's
-    scan(-std::numeric_limits<double>::infinity(), high);
-    scan(low + length, std::numeric_limits<double>::infinity());
-  } else if (high > length) {
-    scan(-std::numeric_limits<double>::infinity(), high - length);
-    scan(low, std::numeric_limits<double>::infinity());
-  } else {
-    scan(low, high);
   }
 }
 

@@ -2,7 +2,11 @@
 // Polylines of diffusion curves, for the distance field, the amplitude measurement and the
 // intersection checks.
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "vicc_glyphs/dci/diffusion_curve.hpp"
@@ -88,6 +92,43 @@ double cyclicOffset(double from, double to, double length);
 
 /// The arc-length distance of two points of a closed contour: |cyclicOffset|.
 double cyclicDistance(double a, double b, double length);
+
+/// For `items` sorted by arc length (`arc_length(item)`, in [0, length]) along a closed contour:
+/// index ranges [first, second), in increasing order and disjoint, holding every item whose
+/// cyclic arc-length distance to `l` is at most `reach`, and a few that lie a hair farther
+/// (against round-off): callers apply their own exact test. All of them when the reach is half
+/// the length or more (or NaN). A binary search instead of a test of every item: icon corners
+/// near a knot point, knot points near a crossing.
+template <class Items, class ArcLength>
+std::array<std::pair<int, int>, 3> indexRangesNear(const Items& items, double l, double reach,
+                                                   double length, ArcLength&& arc_length) {
+  const int count = static_cast<int>(items.size());
+  std::array<std::pair<int, int>, 3> ranges{};
+  const double r = reach + 1e-9 * (std::abs(reach) + std::abs(l) + length) + 1e-12;
+  if (!(r < 0.5 * length)) {  // also for NaN
+    ranges[0] = {0, count};
+    return ranges;
+  }
+  const auto first_at_or_above = [&](double a) {
+    return static_cast<int>(
+        std::partition_point(items.begin(), items.end(),
+                             [&](const auto& item) { return arc_length(item) < a; }) -
+        items.begin());
+  };
+  const auto first_above = [&](double a) {
+    return static_cast<int>(
+        std::partition_point(items.begin(), items.end(),
+                             [&](const auto& item) { return !(a < arc_length(item)); }) -
+        items.begin());
+  };
+  const double low = l - r, high = l + r;
+  // Past `length` the window continues at 0, before 0 at `length`.
+  if (high >= length) ranges[0] = {0, first_above(high - length)};
+  ranges[1] = {std::max(ranges[0].second, first_at_or_above(low)), first_above(high)};
+  if (low <= 0.0) ranges[2] = {std::max(ranges[1].second, first_at_or_above(low + length)), count};
+  ranges[1].second = std::max(ranges[1].first, ranges[1].second);
+  return ranges;
+}
 
 /// True when `point` lies inside the closed polygon `line` (even-odd rule).
 bool insidePolygon(const Point2& point, const Polyline& line);

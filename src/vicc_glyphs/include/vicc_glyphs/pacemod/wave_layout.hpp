@@ -68,9 +68,8 @@ int wholeWaveCount(double waves_per_unit, double length);
 
 /// The peaks within `window` of arc length `u` along the closed contour (cyclicDistance of
 /// their arc length and u at most `window`), as increasing indices into layout.peaks, written
-/// to `indices` (cleared first). A binary search over the sorted peaks finds the candidates a
-/// hair beyond the window (against round-off); each gets the same test a scan of all would
-/// give, which it also falls back to for a window of half the length or more.
+/// to `indices` (cleared first): the candidates of indexRangesNear (polyline.hpp), each with the
+/// test a scan of all peaks would give.
 void peaksNear(const WaveLayout& layout, double u, double window,
                std::vector<std::size_t>& indices);
 
