@@ -26,7 +26,10 @@ using namespace vicc_glyphs;
 
 void printHistory(const std::string& path, int size, int iterations) {
   const DiffusionCurveImage image = loadDiffusionCurves(path, size);
-  const MultigridOptions defaults;
+  // Where the multigrid itself stops: a flat-colour icon would otherwise take its exact
+  // constants without iterating (MultigridOptions::constant_regions).
+  MultigridOptions defaults;
+  defaults.constant_regions = false;
   const GridProblem problem =
       assembleColorProblem(image, image.width, image.height, 1.0, Color::Zero());
   const std::vector<float> direct = solveDirect(problem);

@@ -7,6 +7,7 @@ add_library(vicc_glyphs_render
   src/render/multigrid_deflation.cpp
   src/render/multigrid_local_relaxation.cpp
   src/render/multigrid.cpp
+  src/render/constant_regions.cpp
   src/render/curve_antialiasing.cpp
   src/render/variable_blur.cpp
   src/render/renderer.cpp
@@ -40,6 +41,7 @@ if(CATKIN_ENABLE_TESTING)
     test/render/LatticeCrossingsTest.cpp
     test/render/GridProblemTest.cpp
     test/render/MultigridTest.cpp
+    test/render/ConstantRegionsTest.cpp
     test/render/RendererTest.cpp
     test/render/DegenerateInputTest.cpp
     test/render/BarrierConvergenceTest.cpp

@@ -78,11 +78,12 @@ void runGlyph(const fs::path& icon, const WaveSpec& spec, DiffusionCurveRenderer
   totals.total_ms.push_back(fastest.total());
   ++totals.glyphs;
   if (times_file) {
-    std::fprintf(times_file, "%s\t%s\t%g\t%g\t%.2f\t%.2f\t%.2f\t%.2f\t%d\n",
+    std::fprintf(times_file, "%s\t%s\t%g\t%g\t%.2f\t%.2f\t%.2f\t%.2f\t%d\t%d\n",
                  icon.filename().c_str(), waveformName(spec.waveform).c_str(),
                  spec.waves_per_mm * 10, spec.amplitude_mm, fastest.import_ms, fastest.modify_ms,
                  fastest.render_ms, fastest.total(),
-                 render_glyphs ? result.report.multigrid.fine_cycles : -1);
+                 render_glyphs ? result.report.multigrid.fine_cycles : -1,
+                 render_glyphs ? int{result.report.multigrid.constant_regions} : -1);
   }
   const measure::GlyphCheck check =
       measure::checkGlyph(original, image, reports, spec, kSize / kSizeMm);
@@ -222,7 +223,7 @@ int run(const std::vector<std::string>& args) {
     if (!times) throw std::runtime_error("cannot write " + times_path);
     std::fprintf(times.get(),
                  "icon\twaveform\twaves_per_10mm\tamplitude_mm\timport_ms\tmodify_ms\t"
-                 "render_ms\ttotal_ms\tcg_iterations\n");
+                 "render_ms\ttotal_ms\tcg_iterations\tconstant_regions\n");
     times_file = times.get();
   }
   std::vector<fs::path> icons;

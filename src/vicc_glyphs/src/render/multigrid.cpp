@@ -21,6 +21,7 @@
 #include "multigrid_levels.hpp"
 #include "multigrid_local_relaxation.hpp"
 #include "vicc_glyphs/numerics/banded_cholesky.hpp"
+#include "vicc_glyphs/render/constant_regions.hpp"
 #include "vicc_glyphs/render/pixel_buffer.hpp"
 
 namespace vicc_glyphs {
@@ -1278,6 +1279,7 @@ std::vector<std::pair<int, int>> levelSizes(int width, int height, int coarsest_
 struct MultigridSolver::Workspaces {
   multigrid_detail::Multigrid<3> color;
   multigrid_detail::Multigrid<1> single;
+  ConstantRegions constant;
 };
 
 MultigridSolver::MultigridSolver() : workspaces_(std::make_unique<Workspaces>()) {}
@@ -1332,6 +1334,15 @@ void validate(const GridProblem& problem, const MultigridOptions& options) {
 void MultigridSolver::solve(const GridProblem& problem, const MultigridOptions& options,
                             float* values, MultigridReport* report) {
   validate(problem, options);
+  if (options.constant_regions && options.tolerance > 0.0 &&
+      workspaces_->constant.solve(problem, ConstantRegions::kDefaultSpread, values)) {
+    if (report) {
+      *report = MultigridReport{};
+      report->converged = true;
+      report->constant_regions = true;
+    }
+    return;
+  }
   if (problem.channels == 3) {
     workspaces_->color.prepare(problem, options);
     workspaces_->color.solve(values, report);

@@ -52,8 +52,14 @@ void printReport(const RenderResult& result, std::ostream& out) {
   out << std::fixed << std::setprecision(2) << "size: " << result.image.cols << "x"
       << result.image.rows << "\n"
       << "time ms: total " << t.total_ms << ", assemble " << t.assemble_ms << ", solve "
-      << t.solve_ms << ", antialias " << t.antialias_ms << ", blur " << t.blur_ms << "\n"
-      << "multigrid: " << report.multigrid.levels << " levels, "
+      << t.solve_ms << ", antialias " << t.antialias_ms << ", blur " << t.blur_ms << "\n";
+  if (report.multigrid.constant_regions) {
+    out << "multigrid: not needed, every free region has one Dirichlet value (its exact "
+           "solution)\n"
+        << std::defaultfloat;
+    return;
+  }
+  out << "multigrid: " << report.multigrid.levels << " levels, "
       << report.multigrid.next_to_finest_cycles << " FMG V-cycles next to the finest grid, "
       << report.multigrid.fine_cycles << " CG iterations (V-cycles) on the finest grid"
       << (report.multigrid.converged ? " (error tolerance reached)" : "")

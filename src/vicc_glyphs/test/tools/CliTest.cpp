@@ -89,12 +89,21 @@ TEST_F(CliTest, RendersAnSvgAtTheRequestedSizeWithReportAndDci) {
   EXPECT_EQ(rgbAt(image, 24, 24), cv::Vec3b(255, 0, 0));
   EXPECT_EQ(rgbAt(image, 2, 2), cv::Vec3b(255, 255, 255));
   EXPECT_TRUE(fs::exists(xml));
-  // The default stops on the error tolerance and says so.
-  EXPECT_NE(result.out.find("(error tolerance reached)"), std::string::npos) << result.out;
-  EXPECT_NE(result.out.find("FMG start  : rms residual"), std::string::npos) << result.out;
-  EXPECT_NE(result.out.find("estimated max error"), std::string::npos) << result.out;
+  // A flat square: each region takes its one colour, without the multigrid.
+  EXPECT_NE(result.out.find("multigrid: not needed, every free region has one Dirichlet value"),
+            std::string::npos)
+      << result.out;
+  EXPECT_EQ(result.out.find("CG iterations"), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("time ms"), std::string::npos);
   EXPECT_EQ(result.err.find("warning"), std::string::npos) << result.err;
+  // Colours that diffuse: the default stops on the error tolerance and says so.
+  const ToolRun diffused = run("render " + packageFile("data/samples/two_curves.xml") + " --out " +
+                               png.string() + " --size 48 --report");
+  ASSERT_EQ(diffused.exit_code, 0) << diffused.err;
+  EXPECT_NE(diffused.out.find("(error tolerance reached)"), std::string::npos) << diffused.out;
+  EXPECT_NE(diffused.out.find("FMG start  : rms residual"), std::string::npos) << diffused.out;
+  EXPECT_NE(diffused.out.find("estimated max error"), std::string::npos) << diffused.out;
+  EXPECT_EQ(diffused.out.find("not needed"), std::string::npos) << diffused.out;
 }
 
 TEST_F(CliTest, CyclesOverrideTheToleranceAndExcludeIt) {

@@ -16,6 +16,8 @@
 // - V-cycle: red-black Gauss-Seidel on the finest level (black-red after the coarse
 //   correction), lexicographic Gauss-Seidel on the coarse ones (backwards after it): with
 //   R = P^T and equal sweep counts a symmetric positive definite preconditioner.
+// - Before all that, with a tolerance: a problem whose every region sees one Dirichlet value
+//   gets those values, exactly, without a level (constant_regions.hpp).
 
 #include <memory>
 #include <vector>
@@ -73,6 +75,12 @@ struct MultigridOptions {
   int max_fine_cycles = 50;
   int fine_cycles = 2;  ///< iterations on the finest level when tolerance is 0 (fewer once
                         ///< the correction is below float resolution)
+  /// With a tolerance: when every free region's Dirichlet values agree (within
+  /// ConstantRegions::kDefaultSpread per channel; flat-colour icons, waved or not), write that
+  /// value into each region instead of iterating: the exact solution (constant_regions.hpp).
+  /// If one region does not qualify, all are iterated as without it. A fixed iteration count
+  /// (tolerance 0) always iterates.
+  bool constant_regions = true;
 
   /// About half an 8-bit colour step (1/510); see docs/rendering.md for how the true error
   /// compares.
@@ -100,6 +108,9 @@ struct MultigridReport {
   std::vector<double> residuals;
   std::vector<double> error_estimates;
   std::vector<double> updates;
+  /// Every free region took its one Dirichlet value (MultigridOptions::constant_regions): no
+  /// levels, no iterations, converged.
+  bool constant_regions = false;
 };
 
 /// Grid sizes of the hierarchy, finest first: each level halves (rounding up) the previous one
