@@ -75,9 +75,10 @@ struct MultigridOptions {
   int max_fine_cycles = 50;
   int fine_cycles = 2;  ///< iterations on the finest level when tolerance is 0 (fewer once
                         ///< the correction is below float resolution)
-  /// With a tolerance: when every free region's Dirichlet values agree (within
-  /// ConstantRegions::kDefaultSpread per channel; flat-colour icons, waved or not), write that
-  /// value into each region instead of iterating: the exact solution (constant_regions.hpp).
+  /// With a tolerance: when every free region's Dirichlet values agree (within half of
+  /// ConstantRegions::kDefaultSpread of one value per channel; flat-colour icons, waved or
+  /// not), write that value into each region instead of iterating: the exact solution within
+  /// that half spread (constant_regions.hpp).
   /// If one region does not qualify, all are iterated as without it. A fixed iteration count
   /// (tolerance 0) always iterates.
   bool constant_regions = true;
