@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "vicc_glyphs/dci/flattening.hpp"
 
@@ -13,22 +14,51 @@ struct CurveSample {
   double position;
 };
 
+// Collects the crossings piece by piece and hands each piece's on to `visit` one piece later,
+// in their order, so that a touch can be taken out: where a curve comes to a line of pixel
+// centres exactly at a piece end and turns back from it, the half-open ranges below count the
+// line twice (at the end of the one piece and the start of the next), on the same link and in
+// opposite directions. The curve touches that link and does not cross it; the pair would cut
+// the link and give each of its pixels both sides' colours at the same distance, whose mean
+// (grey) then spreads a halo into the region beside it.
 class CrossingCollector {
  public:
   CrossingCollector(int curve, int width, int height,
                     const std::function<void(const LatticeCrossing&)>& visit)
       : curve_(curve), width_(width), height_(height), visit_(visit) {}
 
-  // Reports the crossings of the straight piece a -> b with the lines through pixel centres.
-  void addPiece(const CurveSample& a, const CurveSample& b) const {
+  // The crossings of the straight piece a -> b with the lines through pixel centres.
+  void addPiece(const CurveSample& a, const CurveSample& b) {
+    current_.clear();
+    collect(a, b);
+    cancelTouches();
+    flush();
+    held_.swap(current_);
+  }
+
+  // Hands on the crossings held back: at the end of a chain of pieces.
+  void flush() {
+    for (const Held& held : held_) {
+      if (!held.touch) visit_(held.crossing);
+    }
+    held_.clear();
+  }
+
+ private:
+  struct Held {
+    LatticeCrossing crossing;
+    double t = 0.0;  ///< where on its piece: 0 at the start, 1 at the end
+    bool touch = false;
+  };
+
+  // Rows: the line y = j + 0.5 carries the links (i, j) - (i + 1, j). Half-open ranges make
+  // a curve passing through a piece end count once.
+  void collect(const CurveSample& a, const CurveSample& b) {
     const Point2 d = b.point - a.point;
     const double length = d.norm();
     if (!(length > 1e-12)) return;
     const Point2 normal(d.y() / length, -d.x() / length);  // left normal, y-down frame
     const double footprint = 0.5 * (std::abs(normal.x()) + std::abs(normal.y()));
-
-    // Rows: the line y = j + 0.5 carries the links (i, j) - (i + 1, j). Half-open ranges make
-    // a curve passing through a piece end count once.
     const auto [row_begin, row_end] = lineRange(a.point.y(), b.point.y(), height_);
     for (int j = row_begin; j < row_end; ++j) {
       const double t = (j + 0.5 - a.point.y()) / d.y();
@@ -46,6 +76,24 @@ class CrossingCollector {
     }
   }
 
+  // A crossing at the start of this piece and one at the end of the previous piece on the same
+  // link, with the sides swapped: the curve touched the link at their shared point.
+  void cancelTouches() {
+    for (Held& start : current_) {
+      if (start.t != 0.0) continue;
+      for (Held& end : held_) {
+        if (end.touch || end.t != 1.0) continue;
+        const LatticeCrossing &x = start.crossing, &y = end.crossing;
+        if (samePixel(x.left_pixel, y.right_pixel) && samePixel(x.right_pixel, y.left_pixel)) {
+          start.touch = end.touch = true;
+          break;
+        }
+      }
+    }
+  }
+
+  static bool samePixel(const GridPixel& p, const GridPixel& q) { return p.x == q.x && p.y == q.y; }
+
  private:
   // Indices k in [0, count) with min(u, v) <= k + 0.5 < max(u, v).
   static std::pair<int, int> lineRange(double u, double v, int count) {
@@ -61,7 +109,7 @@ class CrossingCollector {
   }
 
   void report(const CurveSample& a, const CurveSample& b, double t, GridPixel first,
-              GridPixel second, const Point2& normal, double footprint) const {
+              GridPixel second, const Point2& normal, double footprint) {
     if (!inside(first) && !inside(second)) return;
     const Point2 at = a.point + t * (b.point - a.point);
     const double first_side = (Point2(first.x + 0.5, first.y + 0.5) - at).dot(normal);
@@ -78,13 +126,15 @@ class CrossingCollector {
     const double first_link = (Point2(first.x + 0.5, first.y + 0.5) - at).norm();
     crossing.left_link_distance = first_is_left ? first_link : 1.0 - first_link;
     crossing.right_link_distance = 1.0 - crossing.left_link_distance;
-    visit_(crossing);
+    current_.push_back({crossing, t, false});
   }
 
   int curve_;
   int width_;
   int height_;
   const std::function<void(const LatticeCrossing&)>& visit_;
+  std::vector<Held> held_;     ///< the previous piece's crossings, not yet handed on
+  std::vector<Held> current_;  ///< this piece's
 };
 
 bool outsideGrid(const Point2* b, int width, int height) {
@@ -113,7 +163,7 @@ Point2 snapped(const Point2& p) {
 // could stop short of the last line of pixel centres and let the two sides mix around it;
 // extending it straight on by a few grid pixels keeps the levels' geometry alike.
 void extendEndsLeavingTheImage(const DiffusionCurve& curve, const DiffusionCurveImage& image,
-                               double scale, const CrossingCollector& collector) {
+                               double scale, CrossingCollector& collector) {
   const int segments = curve.segmentCount();
   constexpr double kExtension = 2.0;  // grid pixels
   const auto outside = [&](const Point2& p) {
@@ -136,6 +186,7 @@ void extendEndsLeavingTheImage(const DiffusionCurve& curve, const DiffusionCurve
     } else {
       collector.addPiece(from, to);
     }
+    collector.flush();  // a piece on its own
   }
 }
 
@@ -146,15 +197,16 @@ void forEachLatticeCrossing(const DiffusionCurveImage& image, double scale, int 
   for (size_t c = 0; c < image.curves.size(); ++c) {
     const DiffusionCurve& curve = image.curves[c];
     const int segments = curve.segmentCount();
-    const CrossingCollector collector(static_cast<int>(c), width, height, visit);
+    CrossingCollector collector(static_cast<int>(c), width, height, visit);
     const std::vector<char> beside_fold = segmentsBesideFolds(curve.control_points);
     for (int k = 0; k < segments; ++k) {
       Point2 b[4];
       for (int m = 0; m < 4; ++m) b[m] = scale * curve.control_points[3 * k + m];
-      if (!b[0].allFinite() || !b[1].allFinite() || !b[2].allFinite() || !b[3].allFinite()) {
+      if (!b[0].allFinite() || !b[1].allFinite() || !b[2].allFinite() || !b[3].allFinite() ||
+          outsideGrid(b, width, height)) {
+        collector.flush();  // the chain of pieces breaks here
         continue;
       }
-      if (outsideGrid(b, width, height)) continue;
       // As PACEMOD's polygon checks (flattening.hpp).
       const int pieces = flatteningPieces(b, beside_fold[k]);
       CurveSample previous{snapped(b[0]), static_cast<double>(k)};
@@ -165,6 +217,7 @@ void forEachLatticeCrossing(const DiffusionCurveImage& image, double scale, int 
         previous = next;
       }
     }
+    collector.flush();
     if (segments > 0) extendEndsLeavingTheImage(curve, image, scale, collector);
   }
 }

@@ -140,7 +140,9 @@ TEST(GridProblemTest, EveryFixedPixelTakesTheSideItsCentreLiesOn) {
   // Sharp tips cross some links twice (once by each flank). The far flank's line can pass
   // closer to a pixel centre than the near one's, so the side is the one of the crossing met
   // first along the link; by the perpendicular distance, pixels outside a tip took the tip's
-  // colour (a dark smudge in the light region of a waved glyph).
+  // colour (a dark smudge in the light region of a waved glyph). A tip that only touches a
+  // link beside a pixel (its corner on the line of pixel centres) leaves it alone: until
+  // session 43 such a pixel took the mean of both sides (4 on the 96 teeth at 512 px).
   for (const auto& [size, teeth] : {std::pair{256, 24}, {256, 64}, {512, 96}}) {
     const DiffusionCurveImage image = zigzagImage(size, teeth, 0.2, 0.45);
     const GridProblem problem = assembleColorProblem(image, size, size, 1.0, Color::Zero());
@@ -151,16 +153,12 @@ TEST(GridProblemTest, EveryFixedPixelTakesTheSideItsCentreLiesOn) {
       const Point2 centre(p % size + 0.5, p / size + 0.5);
       // A centre on the curve (curve samples snap to 1/1024 pixel) may take either side.
       if (distanceToPolygonOf(image.curves[0], centre) < 1e-2) continue;
-      if (cornerTouchesLinksOf(image.curves[0], centre, 1e-3)) {
-        ++touched;
-        continue;
-      }
+      touched += cornerTouchesLinksOf(image.curves[0], centre, 1e-3);
       const float expected_green = insidePolygonOf(image.curves[0], centre) ? 0.6f : 0.1f;
       wrong += std::abs(problem.value(1, p) - expected_green) > 1e-6f;
     }
     EXPECT_GT(fixed, 4 * teeth) << size << " px, " << teeth << " teeth";
-    EXPECT_EQ(wrong, 0) << size << " px, " << teeth << " teeth";
-    EXPECT_LE(touched, 16) << size << " px, " << teeth << " teeth";
+    EXPECT_EQ(wrong, 0) << size << " px, " << teeth << " teeth, " << touched << " touched";
   }
 }
 

@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "sample_images.hpp"
+#include "vicc_glyphs/render/grid_problem.hpp"
 #include "vicc_glyphs/render/lattice_crossings.hpp"
 
 namespace vicc_glyphs {
@@ -73,6 +75,40 @@ TEST(LatticeCrossingsTest, CurvesOutsideOrWithoutLengthGiveNone) {
   broken.control_points = {{0, 0}, {10, 10}};  // not 3K+1 points
   image.curves.push_back(broken);
   EXPECT_TRUE(crossingsOf(image).empty());
+}
+
+// Crossings of the link between pixels (x, y) and (x + 1, y).
+int crossingsOfRowLink(const std::vector<LatticeCrossing>& crossings, int x, int y) {
+  int count = 0;
+  for (const LatticeCrossing& c : crossings) {
+    const GridPixel& a = c.left_pixel;
+    const GridPixel& b = c.right_pixel;
+    count += a.y == y && b.y == y && std::min(a.x, b.x) == x && std::max(a.x, b.x) == x + 1;
+  }
+  return count;
+}
+
+// A corner that comes up to the line of pixel centres y = 5.5 and turns back touches the link
+// it meets there: no crossing (the half-open ranges would count the line at the end of the one
+// side and the start of the next, in opposite directions, and give both pixels both colours).
+// A corner on that line that the curve passes through crosses it once.
+TEST(LatticeCrossingsTest, ACornerTouchingALineOfPixelCentresDoesNotCrossIt) {
+  DiffusionCurveImage touch{12, 12, {}};
+  touch.curves.push_back(
+      polygonCurve({{8.1, 9.2}, {5.3, 5.5}, {2.2, 9.3}}, Color(1, 0, 0), Color(0, 0, 1)));
+  EXPECT_EQ(crossingsOfRowLink(crossingsOf(touch), 4, 5), 0);
+  const GridProblem problem = assembleColorProblem(touch, 12, 12, 1.0, Color::Zero());
+  EXPECT_TRUE(problem.couples_right[5 * 12 + 4]);   // the touched link stays
+  for (int p = 0; p < problem.pixelCount(); ++p) {  // every Dirichlet pixel red or blue
+    if (!problem.fixed[p]) continue;
+    EXPECT_TRUE(problem.value(1, p) == 0.0f && (problem.value(0, p) + problem.value(2, p)) == 1.0f)
+        << p % 12 << ", " << p / 12;
+  }
+
+  DiffusionCurveImage through{12, 12, {}};
+  through.curves.push_back(
+      polygonCurve({{8.1, 3.2}, {5.3, 5.5}, {2.2, 9.3}}, Color(1, 0, 0), Color(0, 0, 1)));
+  EXPECT_EQ(crossingsOfRowLink(crossingsOf(through), 4, 5), 1);
 }
 
 }  // namespace
