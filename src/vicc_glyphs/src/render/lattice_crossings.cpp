@@ -51,14 +51,16 @@ class CrossingCollector {
     bool touch = false;
   };
 
-  // Rows: the line y = j + 0.5 carries the links (i, j) - (i + 1, j). Half-open ranges make
-  // a curve passing through a piece end count once.
+  // The crossings of the straight piece a -> b with the lines through pixel centres, into
+  // current_.
   void collect(const CurveSample& a, const CurveSample& b) {
     const Point2 d = b.point - a.point;
     const double length = d.norm();
     if (!(length > 1e-12)) return;
     const Point2 normal(d.y() / length, -d.x() / length);  // left normal, y-down frame
     const double footprint = 0.5 * (std::abs(normal.x()) + std::abs(normal.y()));
+    // Rows: the line y = j + 0.5 carries the links (i, j) - (i + 1, j). Half-open ranges make
+    // a curve passing through a piece end count once.
     const auto [row_begin, row_end] = lineRange(a.point.y(), b.point.y(), height_);
     for (int j = row_begin; j < row_end; ++j) {
       const double t = (j + 0.5 - a.point.y()) / d.y();
@@ -94,7 +96,6 @@ class CrossingCollector {
 
   static bool samePixel(const GridPixel& p, const GridPixel& q) { return p.x == q.x && p.y == q.y; }
 
- private:
   // Indices k in [0, count) with min(u, v) <= k + 0.5 < max(u, v).
   static std::pair<int, int> lineRange(double u, double v, int count) {
     const double low = std::min(u, v) - 0.5;
