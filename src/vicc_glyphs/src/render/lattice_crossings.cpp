@@ -62,10 +62,14 @@ class CrossingCollector {
     // Rows: the line y = j + 0.5 carries the links (i, j) - (i + 1, j). Half-open ranges make
     // a curve passing through a piece end count once.
     const auto [row_begin, row_end] = lineRange(a.point.y(), b.point.y(), height_);
+    // A slanted piece through a pixel centre crosses a row and a column line there; it is taken
+    // to pass beside the centre as if the lattice were moved by (e, e^2), e -> 0 (below).
+    const bool slanted = d.x() != 0.0 && d.y() != 0.0;
     for (int j = row_begin; j < row_end; ++j) {
       const double t = (j + 0.5 - a.point.y()) / d.y();
       const double x = a.point.x() + t * d.x();
-      const int i = static_cast<int>(std::floor(x - 0.5));
+      int i = static_cast<int>(std::floor(x - 0.5));
+      if (slanted && onLatticePoint(x)) i = static_cast<int>(std::lround(x - 0.5)) - 1;
       report(a, b, t, {i, j}, {i + 1, j}, normal, footprint);
     }
     // Columns: the line x = i + 0.5 carries the links (i, j) - (i, j + 1).
@@ -73,10 +77,26 @@ class CrossingCollector {
     for (int i = column_begin; i < column_end; ++i) {
       const double t = (i + 0.5 - a.point.x()) / d.x();
       const double y = a.point.y() + t * d.y();
-      const int j = static_cast<int>(std::floor(y - 0.5));
+      int j = static_cast<int>(std::floor(y - 0.5));
+      if (slanted && onLatticePoint(y)) {
+        j = static_cast<int>(std::lround(y - 0.5)) - (d.x() * d.y() > 0.0 ? 0 : 1);
+      }
       report(a, b, t, {i, j}, {i, j + 1}, normal, footprint);
     }
   }
+
+  // Whether a crossing's other coordinate lies on a line of pixel centres, so that it is a
+  // pixel centre. Both lines' crossings there named their links by std::floor, which put the
+  // centre on the curve's left side for one and on its right for the other: the pixel then
+  // took the mean of both colours, a grey whose halo spread into the flat region beside it.
+  // Moved by (e, e^2), the centre lies on one side: the row line's crossing falls just before
+  // it in x (the link to its left), the column line's just after it in y where the piece runs
+  // down to the right or up to the left (dx dy > 0, the link below), else just before it.
+  static bool onLatticePoint(double coordinate) {
+    const double offset = coordinate - 0.5;
+    return std::abs(offset - std::round(offset)) < kLatticePointTolerance;
+  }
+  static constexpr double kLatticePointTolerance = 1e-9;  // px; sample points snap to 1/1024
 
   // A crossing at the start of this piece and one at the end of the previous piece on the same
   // link, with the sides swapped: the curve touched the link at their shared point.

@@ -111,5 +111,28 @@ TEST(LatticeCrossingsTest, ACornerTouchingALineOfPixelCentresDoesNotCrossIt) {
   EXPECT_EQ(crossingsOfRowLink(crossingsOf(through), 4, 5), 1);
 }
 
+// A slanted curve through pixel centres (an icon's 45-degree edge on the lattice's diagonal)
+// meets a row line and a column line at each of them. Moved by an infinitesimal (e, e^2), the
+// lattice puts each centre on one side: its two crossings agree, and no Dirichlet pixel takes
+// the mean of both colours (before, each centre on the line took red and blue at distance 0).
+TEST(LatticeCrossingsTest, ASlantedCurveThroughPixelCentresPutsEachOnOneSide) {
+  for (const Point2& to : {Point2(12.0, 12.0), Point2(0.0, 12.0)}) {  // down-right, down-left
+    DiffusionCurveImage image{12, 12, {}};
+    const Point2 from = to.x() > 0.0 ? Point2(0.0, 0.0) : Point2(12.0, 0.0);
+    image.curves.push_back(lineCurve(from, to, Color(1, 0, 0), Color(0, 0, 1)));
+    const GridProblem problem = assembleColorProblem(image, 12, 12, 1.0, Color::Zero());
+    int centres = 0;
+    for (int p = 0; p < problem.pixelCount(); ++p) {
+      if (!problem.fixed[p]) continue;
+      const float red = problem.value(0, p), blue = problem.value(2, p);
+      EXPECT_TRUE((red == 1.0f && blue == 0.0f) || (red == 0.0f && blue == 1.0f))
+          << p % 12 << ", " << p / 12 << ": " << red << " " << blue;
+      const double x = p % 12 + 0.5, y = p / 12 + 0.5;
+      centres += to.x() > 0.0 ? x == y : x == 12.0 - y;
+    }
+    EXPECT_GE(centres, 10);  // the centres on the line are Dirichlet pixels, one colour each
+  }
+}
+
 }  // namespace
 }  // namespace vicc_glyphs
