@@ -167,27 +167,7 @@ bool ConstantRegions::propagate(const GridProblem& problem) {
 bool ConstantRegions::fillRemaining(const GridProblem& problem) {
   const int w = problem.width, n = problem.pixelCount();
   std::uint8_t* id = ids_.data();
-  const auto linked = [&](int p, auto&& visit) {
-    if (problem.couples_right[p]) visit(p + 1);
-    if (p > 0 && problem.couples_right[p - 1]) visit(p - 1);
-    if (problem.couples_down[p]) visit(p + w);
-    if (p >= w && problem.couples_down[p - w]) visit(p - w);
-  };
-  queue_.clear();
-  for (int p = 0; p < n; ++p) {
-    if (!id[p]) continue;
-    bool borders_unknown = false;
-    linked(p, [&](int q) { borders_unknown = borders_unknown || !id[q]; });
-    if (borders_unknown) queue_.push_back(p);
-  }
-  for (std::size_t head = 0; head < queue_.size(); ++head) {
-    const int p = queue_[head];
-    linked(p, [&](int q) {
-      if (id[q]) return;
-      id[q] = id[p];  // a conflicting neighbour shows in the links' check afterwards
-      queue_.push_back(q);
-    });
-  }
+  spreadLabelsOverLinks(problem, id, queue_);  // a conflicting neighbour shows in the check below
   for (int p = 0; p < n; ++p) {
     if (!id[p]) return false;
   }

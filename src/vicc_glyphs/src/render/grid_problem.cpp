@@ -70,22 +70,7 @@ void fixUnreachedPixels(GridProblem& problem, const std::vector<double>& backgro
   const int n = problem.pixelCount();
   reached.assign(problem.fixed.begin(), problem.fixed.end());
   if (propagateByRasterPasses(problem, reached)) return;
-  // The search starts from the reached pixels linked to an unreached one: the rest have
-  // nothing left to reach.
-  queue.clear();
-  for (int p = 0; p < n; ++p) {
-    if (!reached[p]) continue;
-    if (anyLinkedPixel(problem, p, [&](int q) { return !reached[q]; })) queue.push_back(p);
-  }
-  for (size_t head = 0; head < queue.size(); ++head) {
-    anyLinkedPixel(problem, queue[head], [&](int q) {
-      if (!reached[q]) {
-        reached[q] = 1;
-        queue.push_back(q);
-      }
-      return false;  // visit every linked pixel
-    });
-  }
+  spreadLabelsOverLinks(problem, reached.data(), queue);
   for (int p = 0; p < n; ++p) {
     if (reached[p]) continue;
     problem.fixed[p] = 1;
@@ -170,6 +155,27 @@ void assembleGridProblem(const DiffusionCurveImage& image, double scale, const S
 }
 
 }  // namespace
+
+void spreadLabelsOverLinks(const GridProblem& problem, std::uint8_t* labels,
+                           std::vector<int>& queue) {
+  // The search starts from the labelled pixels linked to an unlabelled one: the rest have
+  // nothing left to reach.
+  queue.clear();
+  for (int p = 0; p < problem.pixelCount(); ++p) {
+    if (!labels[p]) continue;
+    if (anyLinkedPixel(problem, p, [&](int q) { return !labels[q]; })) queue.push_back(p);
+  }
+  for (size_t head = 0; head < queue.size(); ++head) {
+    const int p = queue[head];
+    anyLinkedPixel(problem, p, [&](int q) {
+      if (!labels[q]) {
+        labels[q] = labels[p];
+        queue.push_back(q);
+      }
+      return false;  // visit every linked pixel
+    });
+  }
+}
 
 void GridAssembler::assembleColor(const DiffusionCurveImage& image, int width, int height,
                                   double scale, const Color& background, GridProblem& problem) {

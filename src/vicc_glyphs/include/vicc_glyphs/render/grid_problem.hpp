@@ -62,6 +62,12 @@ class GridAssembler {
   std::vector<int> queue_;
 };
 
+/// Spreads the non-zero `labels` (one per pixel) over the links into the pixels labelled 0,
+/// breadth first from the labelled pixels linked to one: each takes the label of the pixel it
+/// is reached from. Pixels that no link joins to a labelled one keep 0. `queue` is scratch.
+void spreadLabelsOverLinks(const GridProblem& problem, std::uint8_t* labels,
+                           std::vector<int>& queue);
+
 /// One-off versions of GridAssembler's functions.
 GridProblem assembleColorProblem(const DiffusionCurveImage& image, int width, int height,
                                  double scale, const Color& background);
