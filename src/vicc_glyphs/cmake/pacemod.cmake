@@ -21,6 +21,7 @@ add_library(vicc_glyphs_pacemod
   src/pacemod/contour_teeth.cpp
   src/pacemod/wave_strips.cpp
   src/pacemod/offset_fit.cpp
+  src/pacemod/bend_refit.cpp
   src/pacemod/original_splice.cpp
   src/pacemod/contour_waves.cpp
   src/pacemod/periodic_waves.cpp

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "bend_refit.hpp"
 #include "offset_fit.hpp"
 #include "vicc_glyphs/bspline/frenet_frame.hpp"
 #include "vicc_glyphs/pacemod/original_splice.hpp"
@@ -94,6 +95,13 @@ constexpr double kLongCornerStrip = 8.0;
 // A knot point limited on an icon corner is reported when it keeps less than this of its
 // amplitude.
 constexpr double kCornerShortfall = 0.99;
+// The rectangle's profile bends at a knot point where its step changes by more than this
+// fraction of the amplitude (bend_refit.hpp): the fit overshoots by up to a tenth of the step,
+// 2.5 % of the amplitude for smaller ones.
+constexpr double kBendStep = 0.25;
+// A bend's window is fitted again where the curve leaves the offset path by more than this
+// fraction of the amplitude (and kFitTolerance).
+constexpr double kBendDeviation = 0.03;
 
 // The knot vector `knots` (clamped cubic over [0, L]) with the contour's corners added as
 // triple knots at their arc lengths (an existing knot at the same place is raised), so that
@@ -415,10 +423,12 @@ bool occupied(const ContourWave& wave, std::size_t corner) {
          wave.on_corner.end();
 }
 
-// Fowler-Bartels on `fit`: the curve meets every translated knot point and every icon corner
-// no knot point sits on its target (sine and rectangle).
-BSplineCurve meetTargets(const BSplineCurve& fit, const ContourFrame& frame,
-                         const ContourWave& wave, const std::vector<Point2>& corner_targets) {
+// The positions Fowler-Bartels makes `fit` meet: every translated knot point and every icon
+// corner no knot point sits on at its target (sine and rectangle), and the seam's tangent.
+std::vector<bspline::CurveConstraint> targetConstraints(const BSplineCurve& fit,
+                                                        const ContourFrame& frame,
+                                                        const ContourWave& wave,
+                                                        const std::vector<Point2>& corner_targets) {
   std::vector<bspline::CurveConstraint> constraints = seamConstraints(frame, fit);
   for (std::size_t i = 0; i < wave.parameters.size(); ++i) {
     if (!wave.swallowed[i]) constraints.push_back({wave.parameters[i], targetOf(wave, i), 0});
@@ -428,7 +438,31 @@ BSplineCurve meetTargets(const BSplineCurve& fit, const ContourFrame& frame,
     if (occupied(wave, c) || corner.arc_length <= 0.0) continue;
     constraints.push_back({cornerKnot(fit, corner.arc_length), corner_targets[c], 0});
   }
-  return sparseFowlerBartels(fit, constraints);
+  return constraints;
+}
+
+// The rectangle's bends at simple knots (bend_refit.hpp): knot points where the profile's step
+// from the one before to the one after changes by more than kBendStep of the amplitude, with
+// their neighbours (`amplitude`: the wave's largest); bends at consecutive knot points share a
+// window.
+std::vector<detail::BendWindow> bendWindows(const BSplineCurve& curve, const ContourWave& wave,
+                                            double amplitude) {
+  std::vector<detail::BendWindow> windows;
+  const std::vector<double>& p = wave.parameters;
+  std::size_t last_after = 0;  // the index after the last window's last bend
+  for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+    if (!(p[i - 1] < p[i] && p[i] < p[i + 1]) || curve.multiplicity(p[i]) >= 3) continue;
+    const double step_before = appliedOffset(wave, i) - appliedOffset(wave, i - 1);
+    const double step_after = appliedOffset(wave, i + 1) - appliedOffset(wave, i);
+    if (std::abs(step_after - step_before) <= kBendStep * amplitude) continue;
+    if (!windows.empty() && last_after == i) {
+      windows.back().knot_points.push_back(p[i + 1]);  // the bend before was at i - 1
+    } else {
+      windows.push_back({{p[i - 1], p[i], p[i + 1]}});
+    }
+    last_after = i + 1;
+  }
+  return windows;
 }
 
 // Where knot point i lies against the inner icon corners around it (corners are sorted by arc
@@ -525,12 +559,27 @@ std::size_t peakAt(const WaveLayout& layout, double l) {
 }
 
 // Sine and rectangle: the offset fit of the wave's profile, then Fowler-Bartels for the knot
-// points and the icon's corners; the rectangle's flanks become strips.
-BSplineCurve smoothWave(const ContourFrame& frame, const ContourWave& wave) {
+// points and the icon's corners; where the rectangle's profile bends beside a reduced knot
+// point the fit is refined (bend_refit.hpp); its flanks become strips.
+BSplineCurve smoothWave(const ContourFrame& frame, const OffsetFrame& offsets,
+                        const ContourWave& wave) {
   const detail::OffsetFit::Offset offset = WaveProfile(wave);
   const detail::OffsetFit::CornerPassage passage = frame.offset_fit->cornerPassage(offset);
-  BSplineCurve curve =
-      meetTargets(frame.offset_fit->fit(offset, passage), frame, wave, passage.targets);
+  const BSplineCurve fit = frame.offset_fit->fit(offset, passage);
+  const std::vector<bspline::CurveConstraint> pinned =
+      targetConstraints(fit, frame, wave, passage.targets);
+  BSplineCurve curve = sparseFowlerBartels(fit, pinned);
+  if (wave.layout.waveform == Waveform::Rectangle) {
+    std::vector<double> keep_out{0.0, wave.layout.length};
+    for (const ContourCorner& corner : frame.corners) keep_out.push_back(corner.arc_length);
+    const auto path = [&](double l) { return offsets.offsetPoint(l, waveOffsetAt(wave, l)); };
+    double amplitude = 0.0;
+    for (const GuardResult& guarded : wave.guarded) {
+      amplitude = std::max(amplitude, guarded.amplitude);
+    }
+    curve = detail::refitBends(curve, bendWindows(curve, wave, amplitude), pinned, keep_out, path,
+                               std::max(kFitTolerance, kBendDeviation * amplitude));
+  }
   if (wave.layout.straight_spans.empty()) return curve;
   std::vector<Point2> points = curve.controlPoints();
   for (std::size_t k = 0; k < wave.layout.straight_spans.size(); ++k) {
@@ -554,7 +603,22 @@ struct StripBreak {
   double offset;
   Point2 point;
   const ContourCorner* corner;
+  double corner_arc = 0.0;  ///< the corner's arc length nearest to arc_length (StripPiece)
 };
+
+// The break of knot point or corner `corner` at arc length l; the corner's arc length is taken
+// as the one (of at, at - L, at + L) nearest to l, so that the closing corner is at L for the
+// strips before it.
+StripBreak stripBreak(double l, double w, const Point2& point, const ContourCorner* corner,
+                      double length) {
+  StripBreak result{l, w, point, corner, l};
+  if (!corner) return result;
+  double at = corner->arc_length;
+  if (std::abs(at + length - l) < std::abs(at - l)) at += length;
+  if (std::abs(at - length - l) < std::abs(at - l)) at -= length;
+  result.corner_arc = at;
+  return result;
+}
 
 // Whether the strip from `a` to `b`, fitted as one cubic with `deviation`, stays whole (see
 // appendStrip).
@@ -581,16 +645,18 @@ void appendStrip(const OffsetFrame& offsets, const StripBreak& a, const StripBre
                  std::vector<double>& knots, std::vector<Point2>& points) {
   const std::size_t first = points.size() - 1;
   points.insert(points.end(), 3, b.point);
-  const detail::StripDeviation deviation = detail::fitStrip(
-      points, static_cast<int>(first),
-      {a.arc_length, b.arc_length, a.offset, b.offset, a.corner, b.corner}, offsets);
+  const detail::StripDeviation deviation =
+      detail::fitStrip(points, static_cast<int>(first),
+                       {a.arc_length, b.arc_length, a.offset, b.offset, a.corner, b.corner,
+                        a.corner_arc, b.corner_arc},
+                       offsets);
   if (stripFits(a, b, deviation) || depth == kMaxStripSplits ||
       b.arc_length - a.arc_length < 2.0 * kMinStripPiece) {
     return;
   }
   const double middle = 0.5 * (a.arc_length + b.arc_length);
   const double w = 0.5 * (a.offset + b.offset);
-  const StripBreak split{middle, w, offsets.offsetPoint(middle, w), nullptr};
+  const StripBreak split{middle, w, offsets.offsetPoint(middle, w), nullptr, middle};
   points.resize(first + 1);
   appendStrip(offsets, a, split, depth + 1, knots, points);
   knots.insert(knots.end(), 3, middle);
@@ -606,20 +672,22 @@ BSplineCurve stripWave(const ContourFrame& frame, const OffsetFrame& offsets,
   const std::size_t count = wave.parameters.size();
   for (std::size_t i = 0; i < count; ++i) {
     const ContourCorner* own = wave.on_corner[i] >= 0 ? &frame.corners[wave.on_corner[i]] : nullptr;
-    breaks.push_back({wave.parameters[i], appliedOffset(wave, i), targetOf(wave, i), own});
+    breaks.push_back(stripBreak(wave.parameters[i], appliedOffset(wave, i), targetOf(wave, i), own,
+                                wave.layout.length));
     if (i + 1 == count) break;
     const double l0 = wave.parameters[i], l1 = wave.parameters[i + 1];
     // The corners strictly inside the strip: those within half its length of its middle.
-    forEachCornerNear(frame.corners, 0.5 * (l0 + l1), 0.5 * (l1 - l0), wave.layout.length,
-                      [&](int c) {
-                        const ContourCorner& corner = frame.corners[c];
-                        if (occupied(wave, c) || corner.arc_length <= l0 + kSameArcLength ||
-                            corner.arc_length >= l1 - kSameArcLength) {
-                          return;
-                        }
-                        const double w = waveOffsetAt(wave, corner.arc_length);
-                        breaks.push_back({corner.arc_length, w, corner.offsetPoint(w), &corner});
-                      });
+    forEachCornerNear(
+        frame.corners, 0.5 * (l0 + l1), 0.5 * (l1 - l0), wave.layout.length, [&](int c) {
+          const ContourCorner& corner = frame.corners[c];
+          if (occupied(wave, c) || corner.arc_length <= l0 + kSameArcLength ||
+              corner.arc_length >= l1 - kSameArcLength) {
+            return;
+          }
+          const double w = waveOffsetAt(wave, corner.arc_length);
+          breaks.push_back(
+              stripBreak(corner.arc_length, w, corner.offsetPoint(w), &corner, wave.layout.length));
+        });
   }
   std::vector<double> knots(4, 0.0);
   std::vector<Point2> points{breaks.front().point};
@@ -736,7 +804,7 @@ ContourWave modifyContour(const ContourFrame& frame, const BSplineCurve& origina
   switch (wave.layout.waveform) {
     case Waveform::Sine:
     case Waveform::Rectangle:
-      wave.curve = smoothWave(frame, wave);
+      wave.curve = smoothWave(frame, offsets, wave);
       break;
     case Waveform::Triangle:
     case Waveform::Sawtooth:

@@ -54,6 +54,11 @@ ContourSample OffsetFrame::sample(double l) const {
   return {original.pointAt(table.parameterAt(l)), normal(l)};
 }
 
+int StripPiece::cornerSide(bool at_begin) const {
+  if (at_begin) return corner_arc_at_begin >= l1 ? -1 : 1;
+  return corner_arc_at_end <= l0 ? 1 : -1;
+}
+
 std::vector<ContourSample> stripSamples(const OffsetFrame& frame, double l0, double l1) {
   std::vector<double> lengths;
   for (int k = 1; k <= kStripSamples; ++k) {
@@ -109,12 +114,15 @@ StripDeviation fitStrip(std::vector<Point2>& points, int first, const StripPiece
   };
   addArc(piece.corner_at_begin, piece.w0, +1);
   const int count = static_cast<int>(samples.size());
+  auto past = [&](bool at_begin, const Point2& q) {
+    const ContourCorner* corner = at_begin ? piece.corner_at_begin : piece.corner_at_end;
+    return corner && corner->pastBisector(q, piece.cornerSide(at_begin));
+  };
   for (int k = 1; k <= count; ++k) {
     const double t = static_cast<double>(k) / (count + 1);
     const ContourSample& sample = samples[k - 1];
     const Point2 q = sample.point + ((1 - t) * piece.w0 + t * piece.w1) * sample.normal;
-    if ((piece.corner_at_begin && piece.corner_at_begin->pastBisector(q, +1)) ||
-        (piece.corner_at_end && piece.corner_at_end->pastBisector(q, -1))) {
+    if (past(true, q) || past(false, q)) {
       by_chord = true;
       continue;
     }

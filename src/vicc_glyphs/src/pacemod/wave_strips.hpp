@@ -6,6 +6,7 @@
 // amplitude (a chord would lose the sagitta). Next to an icon corner the offset points past the
 // corner's bisector are left out (inside the angle the offset contour ends at the miter).
 
+#include <limits>
 #include <vector>
 
 #include "vicc_glyphs/bspline/arc_length.hpp"
@@ -51,6 +52,21 @@ struct StripPiece {
   double l0 = 0.0, l1 = 0.0, w0 = 0.0, w1 = 0.0;
   const ContourCorner* corner_at_begin = nullptr;
   const ContourCorner* corner_at_end = nullptr;
+  /// Where each end's icon corner lies, as an arc length in the frame of l0 and l1 (the
+  /// closing corner at 0 or L, whichever is nearer; NaN: at the end's own arc length). A knot
+  /// point sent to a corner's miter keeps its own arc length on the side.
+  double corner_arc_at_begin = std::numeric_limits<double>::quiet_NaN();
+  double corner_arc_at_end = std::numeric_limits<double>::quiet_NaN();
+
+  /// The side (-1 before it, +1 after it) of the icon corner at the piece's begin
+  /// (`at_begin`) or end whose offset points the samples are tested against (the bisector
+  /// test): the side after a corner at the begin, before one at the end, unless the corner
+  /// lies beyond the piece's other end (a knot point at the miter of a corner further along:
+  /// the leaf's tip, 5 px on). Where the corner lies inside the piece the samples before it
+  /// stay on the side after it: those are the swallowtail of the side the knot point came
+  /// from, the way from the miter back to the other side (left out, the path jumps from the
+  /// miter to the other side's offset and the strip turns sharply there).
+  int cornerSide(bool at_begin) const;
 };
 
 /// How far a fitted strip leaves the offset path it follows (at the path's points).

@@ -175,6 +175,31 @@ TEST(PacemodGlyphTest, LongSawtoothFlanksFromACornerFollowTheOffsetAwayFromIt) {
   }
 }
 
+// The sawtooth's steep flank into the leaf's 25-degree tip starts at a knot point sent to the
+// tip's miter (its inward offset falls past the tip's bisector) that keeps its own arc length,
+// 5 px before the tip: the flank's samples lie before the tip, and were tested as if after
+// it, so that all were dropped and the cubic, held only by the arc around the tip, bulged out
+// to 1.15 px for 1.02 with a sharp turn at the miter.
+TEST(PacemodGlyphTest, AFlankFromAMiterFollowsTheOffsetOfItsSide) {
+  const auto [check, failures] = checkWavedGlyph(loadDiffusionCurves(kIcons + "leaf.svg", 512),
+                                                 {Waveform::Sawtooth, 0.2, 0.1});
+  EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << failures;
+  EXPECT_GT(check.full_lobes, 70);
+  EXPECT_EQ(check.new_sharp_turns, 0) << failures;
+  EXPECT_EQ(check.new_crossings, 0);
+}
+
+// In the leaf's slit by its stem (2-3 px wide) the skeleton guard takes two rectangle plateau
+// knot points to 0: the fit, pinned at the knot points, overshot the plateau beside that ramp
+// to 1.13 px for 1.02 until the bend's spans got knots of their own (bend_refit.hpp).
+TEST(PacemodGlyphTest, APlateauBesideAReductionKeepsItsAmplitude) {
+  const auto [check, failures] = checkWavedGlyph(loadDiffusionCurves(kIcons + "leaf.svg", 512),
+                                                 {Waveform::Rectangle, 0.2, 0.1});
+  EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << failures;
+  EXPECT_GT(check.full_lobes, 70);
+  EXPECT_EQ(check.new_crossings, 0);
+}
+
 TEST(PacemodGlyphTest, InvalidParametersAreRejectedNamingThem) {
   DiffusionCurveImage image = loadDiffusionCurves(kIcons + "heart.svg", 128);
   auto message = [&](const WaveSpec& spec, double size_mm, std::vector<int> curves) {
