@@ -72,7 +72,9 @@ for entry in "${sets[@]}"; do
     row="$(grep -E "^\| $waveform \|" "$out" | tail -1)"
     IFS='|' read -r -a cells <<< "$row"
     crossings="$(echo "${cells[13]}" | tr -d ' ')"
-    echo "| $name |${cells[1]}|${cells[2]}|${cells[3]}|${cells[4]}|${cells[5]}|${cells[6]}|${cells[7]}|${cells[12]}|${cells[13]}|${cells[14]}|${cells[15]}|" >> "$summary"
+    # cells: 1 waveform ... 12 reduced knot points, 13 new crossings, 14 new sub-pixel loops,
+    # 15 new sharp turns, 16 modify ms median.
+    echo "| $name |${cells[1]}|${cells[2]}|${cells[3]}|${cells[4]}|${cells[5]}|${cells[6]}|${cells[7]}|${cells[12]}|${cells[13]}|${cells[15]}|${cells[16]}|" >> "$summary"
     [[ "$crossings" == "0" ]] || status=1
   done
 done

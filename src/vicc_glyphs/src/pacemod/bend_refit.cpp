@@ -107,6 +107,7 @@ bool fitFreePoints(const FreePoints& free, const std::vector<BasisRow>& rows,
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(kkt);
   if (lu.rank() < n + m) return false;
   const Eigen::MatrixX2d solution = lu.solve(rhs);
+  if (!solution.allFinite()) return false;
   for (int j = 0; j < n; ++j) points[free.first + j] = solution.row(j).transpose();
   return true;
 }

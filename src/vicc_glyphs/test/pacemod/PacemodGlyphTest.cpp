@@ -40,6 +40,16 @@ WavedCheck checkWavedGlyph(const DiffusionCurveImage& original, const WaveSpec& 
   return result;
 }
 
+// The icon at 512 px waved by `spec`: more than `min_full_lobes` full lobes, every one within
+// 10 %, no new crossing and no new sharp turn.
+void expectCleanWaves(const std::string& icon, const WaveSpec& spec, int min_full_lobes) {
+  const auto [check, failures] = checkWavedGlyph(loadDiffusionCurves(kIcons + icon, 512), spec);
+  EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << icon << failures;
+  EXPECT_GT(check.full_lobes, min_full_lobes) << icon;
+  EXPECT_EQ(check.new_crossings, 0) << icon;
+  EXPECT_EQ(check.new_sharp_turns, 0) << icon << failures;
+}
+
 class IconWaves : public ::testing::TestWithParam<Waveform> {};
 
 TEST_P(IconWaves, CountsAmplitudesAndNoCrossingsOnRealIcons) {
@@ -154,12 +164,7 @@ TEST(PacemodGlyphTest, KnotPointsBesideASubPixelStepKeepTheirAmplitude) {
 // its own offset point, the curve bulged to 4.55 px for 4.10; left to the spread, every lobe is
 // within 10 % and nothing folds.
 TEST(PacemodGlyphTest, SinePeaksBesideAConcaveCornerFollowTheSpreadOffset) {
-  const auto [check, failures] = checkWavedGlyph(loadDiffusionCurves(kIcons + "pine-tree.svg", 512),
-                                                 {Waveform::Sine, 0.2, 0.4});
-  EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << failures;
-  EXPECT_GT(check.full_lobes, 50);
-  EXPECT_EQ(check.new_crossings, 0);
-  EXPECT_EQ(check.new_sharp_turns, 0);
+  expectCleanWaves("pine-tree.svg", {Waveform::Sine, 0.2, 0.4}, 50);
 }
 
 // A sawtooth flank from an icon corner over a bend (brain curve 2, lungs; 46 px at 2 waves/10
@@ -167,11 +172,7 @@ TEST(PacemodGlyphTest, SinePeaksBesideAConcaveCornerFollowTheSpreadOffset) {
 // of 1.33 and 1.23 px for 1.02.
 TEST(PacemodGlyphTest, LongSawtoothFlanksFromACornerFollowTheOffsetAwayFromIt) {
   for (const std::string icon : {"brain.svg", "lungs.svg"}) {
-    const auto [check, failures] =
-        checkWavedGlyph(loadDiffusionCurves(kIcons + icon, 512), {Waveform::Sawtooth, 0.2, 0.1});
-    EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << icon << failures;
-    EXPECT_GT(check.full_lobes, 50) << icon;
-    EXPECT_EQ(check.new_crossings, 0) << icon;
+    expectCleanWaves(icon, {Waveform::Sawtooth, 0.2, 0.1}, 50);
   }
 }
 
@@ -181,23 +182,14 @@ TEST(PacemodGlyphTest, LongSawtoothFlanksFromACornerFollowTheOffsetAwayFromIt) {
 // it, so that all were dropped and the cubic, held only by the arc around the tip, bulged out
 // to 1.15 px for 1.02 with a sharp turn at the miter.
 TEST(PacemodGlyphTest, AFlankFromAMiterFollowsTheOffsetOfItsSide) {
-  const auto [check, failures] = checkWavedGlyph(loadDiffusionCurves(kIcons + "leaf.svg", 512),
-                                                 {Waveform::Sawtooth, 0.2, 0.1});
-  EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << failures;
-  EXPECT_GT(check.full_lobes, 70);
-  EXPECT_EQ(check.new_sharp_turns, 0) << failures;
-  EXPECT_EQ(check.new_crossings, 0);
+  expectCleanWaves("leaf.svg", {Waveform::Sawtooth, 0.2, 0.1}, 70);
 }
 
 // In the leaf's slit by its stem (2-3 px wide) the skeleton guard takes two rectangle plateau
 // knot points to 0: the fit, pinned at the knot points, overshot the plateau beside that ramp
 // to 1.13 px for 1.02 until the bend's spans got knots of their own (bend_refit.hpp).
 TEST(PacemodGlyphTest, APlateauBesideAReductionKeepsItsAmplitude) {
-  const auto [check, failures] = checkWavedGlyph(loadDiffusionCurves(kIcons + "leaf.svg", 512),
-                                                 {Waveform::Rectangle, 0.2, 0.1});
-  EXPECT_EQ(check.full_lobes_ok, check.full_lobes) << failures;
-  EXPECT_GT(check.full_lobes, 70);
-  EXPECT_EQ(check.new_crossings, 0);
+  expectCleanWaves("leaf.svg", {Waveform::Rectangle, 0.2, 0.1}, 70);
 }
 
 TEST(PacemodGlyphTest, InvalidParametersAreRejectedNamingThem) {
