@@ -19,18 +19,20 @@ constexpr double kMinSpan = 1e-6;  // px: shorter knot spans carry no samples
 using bspline::BasisRow;
 using bspline::BSplineCurve;
 
-// The de Boor points [first, last] whose support (t_j, t_{j+4}) meets the open interval
-// (begin, end) of a cubic's knots t.
+// The de Boor points [first, last] of `curve` whose support (t_j, t_{j+p+1}) meets the open
+// interval (begin, end).
 struct FreePoints {
   int first = 0;
   int last = -1;
   int count() const { return last - first + 1; }
 };
 
-FreePoints pointsMeeting(const std::vector<double>& t, int point_count, double begin, double end) {
+FreePoints pointsMeeting(const BSplineCurve& curve, double begin, double end) {
+  const std::vector<double>& t = curve.knots();
   const int after_begin = static_cast<int>(std::upper_bound(t.begin(), t.end(), begin) - t.begin());
   const int from_end = static_cast<int>(std::lower_bound(t.begin(), t.end(), end) - t.begin());
-  return {std::max(after_begin - 4, 0), std::min(from_end - 1, point_count - 1)};
+  return {std::max(after_begin - curve.degree() - 1, 0),
+          std::min(from_end - 1, curve.controlPointCount() - 1)};
 }
 
 // Sample parameters inside (begin, end]: kSamplesPerSpan per non-empty knot span of t.
@@ -133,10 +135,10 @@ void refitWindow(const BSplineCurve& curve, std::vector<Point2>& points, const B
   const std::vector<double>& t = curve.knots();
   const int count = curve.controlPointCount();
   const FreePoints free =
-      pointsMeeting(t, count, window.knot_points.front(), window.knot_points.back());
+      pointsMeeting(curve, window.knot_points.front(), window.knot_points.back());
   // The seam's constraints (the tangent at both ends) involve the two points at either end.
   if (free.count() <= 0 || free.first <= 1 || free.last + 2 >= count) return;
-  const double begin = t[free.first], end = t[free.last + 4];
+  const double begin = t[free.first], end = t[free.last + curve.degree() + 1];
   for (double l : keep_out) {
     if (l >= begin && l <= end) return;
   }
