@@ -570,7 +570,7 @@ BSplineCurve smoothWave(const ContourFrame& frame, const OffsetFrame& offsets,
       targetConstraints(fit, frame, wave, passage.targets);
   BSplineCurve curve = sparseFowlerBartels(fit, pinned);
   if (wave.layout.waveform == Waveform::Rectangle) {
-    std::vector<double> keep_out{0.0, wave.layout.length};
+    std::vector<double> keep_out;
     for (const ContourCorner& corner : frame.corners) keep_out.push_back(corner.arc_length);
     const auto path = [&](double l) { return offsets.offsetPoint(l, waveOffsetAt(wave, l)); };
     double amplitude = 0.0;
@@ -607,17 +607,13 @@ struct StripBreak {
 };
 
 // The break of knot point or corner `corner` at arc length l; the corner's arc length is taken
-// as the one (of at, at - L, at + L) nearest to l, so that the closing corner is at L for the
-// strips before it.
+// as the one (of at + k L) nearest to l, so that the closing corner is at L for the strips
+// before it.
 StripBreak stripBreak(double l, double w, const Point2& point, const ContourCorner* corner,
                       double length) {
-  StripBreak result{l, w, point, corner, l};
-  if (!corner) return result;
-  double at = corner->arc_length;
-  if (std::abs(at + length - l) < std::abs(at - l)) at += length;
-  if (std::abs(at - length - l) < std::abs(at - l)) at -= length;
-  result.corner_arc = at;
-  return result;
+  if (!corner) return {l, w, point, nullptr, l};
+  const double at = corner->arc_length;
+  return {l, w, point, corner, at + length * std::round((l - at) / length)};
 }
 
 // Whether the strip from `a` to `b`, fitted as one cubic with `deviation`, stays whole (see
